@@ -1,0 +1,126 @@
+#include "cli.h"
+
+#include <cerrno>
+#include <cstdlib>
+
+namespace {
+
+bool parseUint(const std::string& flag, const std::string& text, uint32_t lo, uint32_t hi,
+               uint32_t* out, std::string* error) {
+  char* end = nullptr;
+  errno = 0;
+  unsigned long long v = strtoull(text.c_str(), &end, 10);
+  if (text.empty() || text[0] == '-' || *end != '\0' || errno == ERANGE || v < lo || v > hi) {
+    *error = flag + " expects an integer from " + std::to_string(lo) + " to " + std::to_string(hi) +
+             ", got '" + text + "'";
+    return false;
+  }
+  *out = uint32_t(v);
+  return true;
+}
+
+}  // namespace
+
+const char* usageText() {
+  return "usage: raytex render SCENE [-o out.png] [--width W] [--height H] [--device N] [--stats]\n"
+         "       raytex devices\n"
+         "       raytex --help | --version\n"
+         "\n"
+         "render   Ray-trace SCENE (a .cfg file) on a Vulkan device and write a PNG.\n"
+         "  -o, --output FILE  output PNG (default out.png), written atomically\n"
+         "  --width W          image width in pixels (default 640)\n"
+         "  --height H         image height in pixels (default 480)\n"
+         "  --device N         Vulkan device index from `raytex devices` (default: the best GPU,\n"
+         "                     else the CPU driver lavapipe)\n"
+         "  --stats            print one line of phase times in milliseconds\n"
+         "  --validate         enable Vulkan validation layers (also RAYTEX_VALIDATION=1)\n"
+         "devices  List the Vulkan devices and their indices.\n"
+         "\n"
+         "Exit codes: 0 success, 1 runtime failure (Vulkan, output file), 2 bad input (usage, scene).\n"
+         "Scene format: docs/scene-format.md\n";
+}
+
+bool parseCli(const std::vector<std::string>& args, CliArgs* out, std::string* error) {
+  *out = CliArgs{};
+  if (args.empty()) {
+    *error = "missing command (try raytex --help)";
+    return false;
+  }
+  const std::string& command = args[0];
+  if (command == "--help" || command == "-h" || command == "help") {
+    out->command = CliCommand::Help;
+    return true;
+  }
+  if (command == "--version") {
+    out->command = CliCommand::Version;
+    return true;
+  }
+  if (command == "devices") {
+    out->command = CliCommand::Devices;
+    if (args.size() > 1) {
+      *error = "devices takes no arguments";
+      return false;
+    }
+    return true;
+  }
+  if (command != "render") {
+    *error = "unknown command '" + command + "' (try raytex --help)";
+    return false;
+  }
+  out->command = CliCommand::Render;
+  RenderOptions& r = out->render;
+  for (size_t i = 1; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    auto value = [&](std::string* v) {
+      if (i + 1 >= args.size()) {
+        *error = a + " needs a value";
+        return false;
+      }
+      *v = args[++i];
+      return true;
+    };
+    std::string v;
+    if (a == "--help" || a == "-h") {
+      out->command = CliCommand::Help;
+      return true;
+    } else if (a == "-o" || a == "--output") {
+      if (!value(&r.output)) return false;
+      if (r.output.empty()) {
+        *error = a + " needs a file name";
+        return false;
+      }
+    } else if (a == "--width") {
+      if (!value(&v) || !parseUint(a, v, 1, kMaxImageSide, &r.width, error)) return false;
+    } else if (a == "--height") {
+      if (!value(&v) || !parseUint(a, v, 1, kMaxImageSide, &r.height, error)) return false;
+    } else if (a == "--device") {
+      uint32_t d = 0;
+      if (!value(&v) || !parseUint(a, v, 0, 255, &d, error)) return false;
+      r.device = int(d);
+    } else if (a == "--stats") {
+      r.stats = true;
+    } else if (a == "--validate") {
+      r.validate = true;
+    } else if (!a.empty() && a[0] == '-') {
+      *error = "unknown option '" + a + "' (try raytex --help)";
+      return false;
+    } else if (r.scene.empty()) {
+      r.scene = a;
+    } else {
+      *error = "more than one scene given ('" + r.scene + "', '" + a + "')";
+      return false;
+    }
+  }
+  if (r.scene.empty()) {
+    *error = "render needs a scene file (e.g. raytex render scenes/textures.cfg -o out.png)";
+    return false;
+  }
+  if (uint64_t(r.width) * r.height > kMaxPixels) {
+    *error = std::to_string(r.width) + "x" + std::to_string(r.height) + " exceeds the limit of " +
+             std::to_string(kMaxPixels) + " pixels (8192x8192)";
+    return false;
+  }
+  const char* env = getenv("RAYTEX_VALIDATION");
+  if (env && std::string(env) == "1") r.validate = true;
+  return true;
+}

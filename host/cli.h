@@ -1,0 +1,33 @@
+// Command-line parsing for the raytex binary. No Vulkan.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+enum class CliCommand { Help, Version, Render, Devices };
+
+struct RenderOptions {
+  std::string scene;
+  std::string output = "out.png";
+  uint32_t width = 640;
+  uint32_t height = 480;
+  int device = -1;        // --device N; -1: best available
+  bool stats = false;     // --stats: one line of phase times
+  bool validate = false;  // --validate, or RAYTEX_VALIDATION=1: Vulkan validation layers
+};
+
+struct CliArgs {
+  CliCommand command = CliCommand::Help;
+  RenderOptions render;
+};
+
+// Largest accepted width or height, and pixel count (the float image and its readback
+// buffer take 32 bytes per pixel).
+constexpr uint32_t kMaxImageSide = 16384;
+constexpr uint64_t kMaxPixels = uint64_t(8192) * 8192;
+
+// Parses argv; false with *error set (a one-line message) on bad usage.
+bool parseCli(const std::vector<std::string>& args, CliArgs* out, std::string* error);
+
+const char* usageText();

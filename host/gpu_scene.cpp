@@ -1,0 +1,150 @@
+#include "gpu_scene.h"
+
+#include "mapping.h"
+#include "noise.h"
+
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+static_assert(int(TextureKind::None) == TEX_NONE && int(TextureKind::Image) == TEX_IMAGE &&
+                  int(TextureKind::Checker) == TEX_CHECKER &&
+                  int(TextureKind::SolidChecker) == TEX_SOLID_CHECKER &&
+                  int(TextureKind::Noise) == TEX_NOISE && int(TextureKind::Marble) == TEX_MARBLE &&
+                  int(TextureKind::Wood) == TEX_WOOD &&
+                  int(TextureKind::Turbulence) == TEX_TURBULENCE &&
+                  int(TextureKind::DTurbulence) == TEX_DTURBULENCE,
+              "TextureKind must match TEX_* in common.h");
+
+namespace {
+
+glm::vec4 v4(const glm::vec3& v, float w = 0.0f) { return glm::vec4(v, w); }
+
+// Materials referenced by objects, in first-use order; -1 stands for the default material.
+std::vector<int> usedMaterials(const Scene& scene) {
+  std::vector<int> used;
+  auto note = [&](int m) {
+    if (std::find(used.begin(), used.end(), m) == used.end()) used.push_back(m);
+  };
+  for (const Sphere& s : scene.spheres) note(s.material);
+  for (const Plane& p : scene.planes) note(p.material);
+  return used;
+}
+
+const Material& materialAt(const Scene& scene, int index, const Material& fallback) {
+  return index < 0 ? fallback : scene.materials[size_t(index)];
+}
+
+gpu::Material packMaterial(const Material& m, uint32_t imageLayer) {
+  gpu::Material g{};
+  g.ambient = v4(m.ambient);
+  g.diffuse = v4(m.diffuse);
+  g.specular = v4(m.specular, m.shininess);
+  g.color1 = v4(m.texture.color1);
+  g.color2 = v4(m.texture.color2);
+  g.params = glm::vec4(m.texture.scale, m.texture.strength, m.texture.squares, 0.0f);
+  g.textureKind = uint32_t(m.texture.kind);
+  g.octaves = uint32_t(std::max(m.texture.octaves, 1));
+  g.imageLayer = imageLayer;
+  return g;
+}
+
+}  // namespace
+
+uint32_t usedTextureKinds(const Scene& scene) {
+  Material fallback = defaultMaterial();
+  uint32_t mask = 0;
+  for (int m : usedMaterials(scene)) mask |= 1u << uint32_t(materialAt(scene, m, fallback).texture.kind);
+  return mask;
+}
+
+gpu::Frame cameraFrame(const Camera& camera, uint32_t width, uint32_t height) {
+  glm::vec3 forward = glm::normalize(camera.lookat - camera.eye);
+  glm::vec3 right = glm::normalize(glm::cross(forward, camera.up));
+  glm::vec3 up = glm::cross(right, forward);
+  float tanHalf = std::tan(glm::radians(camera.fovY) * 0.5f);
+  float aspect = float(width) / float(height);
+  gpu::Frame f{};
+  f.eye = v4(camera.eye);
+  f.cameraRight = v4(right * tanHalf * aspect);
+  f.cameraUp = v4(up * tanHalf);
+  f.cameraForward = v4(forward);
+  f.width = width;
+  f.height = height;
+  return f;
+}
+
+GpuScene buildGpuScene(const Scene& scene, uint32_t width, uint32_t height) {
+  GpuScene g;
+  g.frame = cameraFrame(scene.camera, width, height);
+  g.frame.background = v4(scene.background);
+  g.frame.ambientLight = v4(scene.ambientLight);
+
+  // Materials: only the used ones, re-indexed; image files become array layers.
+  Material fallback = defaultMaterial();
+  std::map<int, uint32_t> materialIndex;
+  std::map<std::string, uint32_t> imageLayer;
+  std::vector<ImageRGBA8> images;
+  for (int m : usedMaterials(scene)) {
+    const Material& material = materialAt(scene, m, fallback);
+    uint32_t layer = 0;
+    if (material.texture.kind == TextureKind::Image) {
+      auto found = imageLayer.find(material.texture.imagePath);
+      if (found == imageLayer.end()) {
+        ImageRGBA8 image;
+        std::string error;
+        if (!loadImage(material.texture.imagePath, &image, &error))
+          throw SceneError(material.texture.loc, error);
+        found = imageLayer.emplace(material.texture.imagePath, uint32_t(images.size())).first;
+        images.push_back(std::move(image));
+      }
+      layer = found->second;
+    }
+    materialIndex[m] = uint32_t(g.materials.size());
+    g.materials.push_back(packMaterial(material, layer));
+    g.textureKinds |= 1u << uint32_t(material.texture.kind);
+  }
+
+  for (const Sphere& s : scene.spheres) {
+    gpu::Sphere gs{};
+    gs.centerRadius = v4(s.center, s.radius);
+    gs.material = materialIndex.at(s.material);
+    g.spheres.push_back(gs);
+  }
+  for (const Plane& p : scene.planes) {
+    // The texture frame is built once here, in double, by the same rule the CPU reference uses.
+    PlaneFrame pf = planeFrame(glm::dvec3(p.normal), double(p.distance));
+    gpu::Plane gp{};
+    gp.normalDistance = glm::vec4(glm::vec3(pf.normal), float(pf.distance));
+    gp.tangentScale = glm::vec4(glm::vec3(pf.tangent), p.texScale);
+    gp.binormal = glm::vec4(glm::vec3(pf.binormal), 0.0f);
+    gp.material = materialIndex.at(p.material);
+    g.planes.push_back(gp);
+  }
+  for (const Light& l : scene.lights) g.lights.push_back({v4(l.position), v4(l.color)});
+  g.frame.sphereCount = uint32_t(g.spheres.size());
+  g.frame.planeCount = uint32_t(g.planes.size());
+  g.frame.lightCount = uint32_t(g.lights.size());
+
+  if (g.textureKinds & ((1u << TEX_NOISE) | (1u << TEX_MARBLE) | (1u << TEX_WOOD) |
+                        (1u << TEX_TURBULENCE) | (1u << TEX_DTURBULENCE)))
+    fillNoiseTable(&g.noise);
+
+  // One sampler2DArray holds every image (lavapipe cannot index sampler arrays
+  // dynamically), so all layers share the largest width and height.
+  if (!images.empty()) {
+    for (const ImageRGBA8& image : images) {
+      g.imageWidth = std::max(g.imageWidth, image.width);
+      g.imageHeight = std::max(g.imageHeight, image.height);
+    }
+    g.imageLayers = int(images.size());
+    for (const ImageRGBA8& image : images) {
+      ImageRGBA8 layer = resizeImage(image, g.imageWidth, g.imageHeight);
+      g.imagePixels.insert(g.imagePixels.end(), layer.pixels.begin(), layer.pixels.end());
+    }
+  }
+  return g;
+}

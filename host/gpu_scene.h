@@ -1,0 +1,33 @@
+// Packs a parsed Scene into the structs of shaders/common.h: only what the
+// scene's objects use goes to the GPU. No Vulkan.
+#pragma once
+
+#include "common.h"
+#include "image_io.h"
+#include "scene.h"
+
+#include <cstdint>
+#include <vector>
+
+struct GpuScene {
+  gpu::Frame frame{};
+  std::vector<gpu::Sphere> spheres;
+  std::vector<gpu::Plane> planes;
+  std::vector<gpu::Material> materials;  // only those referenced by objects
+  std::vector<gpu::Light> lights;
+  gpu::NoiseTable noise{};
+  uint32_t textureKinds = 0;  // bit (1 << TEX_*) per kind in use: the specialisation mask
+  // Image textures in use, all resampled to one size: layer i is material imageLayer i.
+  int imageWidth = 1, imageHeight = 1, imageLayers = 0;
+  std::vector<uint8_t> imagePixels;  // RGBA8 sRGB, layer after layer
+};
+
+// Throws SceneError (with the texture's file location) if an image in use cannot be
+// loaded. width, height: output size in pixels.
+GpuScene buildGpuScene(const Scene& scene, uint32_t width, uint32_t height);
+
+// The camera as the kernel sees it (exposed for the CPU reference).
+gpu::Frame cameraFrame(const Camera& camera, uint32_t width, uint32_t height);
+
+// Bit mask of TEX_* kinds used by the scene's objects.
+uint32_t usedTextureKinds(const Scene& scene);

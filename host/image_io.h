@@ -1,0 +1,39 @@
+// Image files and pixel conversions: PNG/JPEG decode, sRGB encode, atomic PNG
+// write, and image comparison for tests. No Vulkan.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+struct ImageRGBA8 {
+  int width = 0;
+  int height = 0;
+  std::vector<uint8_t> pixels;  // row 0 at the top, 4 bytes per pixel
+};
+
+// Decodes any format stb_image reads into RGBA8. False with *error set on failure.
+bool loadImage(const std::string& path, ImageRGBA8* image, std::string* error);
+
+// Resamples an sRGB-encoded image (filtering in linear light).
+ImageRGBA8 resizeImage(const ImageRGBA8& image, int width, int height);
+
+// Linear float RGBA (row 0 at the top) to sRGB-encoded RGBA8, clamped to [0, 1].
+// Non-finite channels become 0 and are counted in *nonFinite when given.
+ImageRGBA8 encodeSrgb(const float* rgba, int width, int height, size_t* nonFinite = nullptr);
+
+double srgbToLinear(double encoded);  // encoded in [0, 1]
+double linearToSrgb(double linear);   // linear in [0, 1]
+
+// Writes a PNG through a temporary file in the same directory and a rename, so `path`
+// is either the complete new image or untouched. Throws std::runtime_error naming the path.
+void writePngAtomic(const std::string& path, const ImageRGBA8& image);
+
+struct ImageDiff {
+  int maxError = 0;        // largest channel difference, 0..255 (RGB only)
+  double meanError = 0.0;  // mean channel difference (RGB only)
+  bool sizeMismatch = false;
+};
+ImageDiff compareImages(const ImageRGBA8& a, const ImageRGBA8& b);
+// |a - b| per channel, amplified by `gain`, alpha opaque; for looking at failures.
+ImageRGBA8 diffImage(const ImageRGBA8& a, const ImageRGBA8& b, int gain = 8);

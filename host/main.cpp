@@ -1,0 +1,105 @@
+// raytex: texture-mapping ray tracer on Vulkan compute. Subcommands in cli.cpp's usage.
+#include "cli.h"
+#include "gpu_scene.h"
+#include "image_io.h"
+#include "parser.h"
+#include "renderer.h"
+
+#include <chrono>
+#include <cstdio>
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double msSince(Clock::time_point& start) {
+  Clock::time_point now = Clock::now();
+  double ms = std::chrono::duration<double, std::milli>(now - start).count();
+  start = now;
+  return ms;
+}
+
+int runRender(const RenderOptions& options) {
+  Clock::time_point t = Clock::now();
+  // Parse and load images before touching Vulkan: bad input fails fast, with no device.
+  Scene scene;
+  GpuScene gpuScene;
+  try {
+    scene = parseSceneFile(options.scene);
+    gpuScene = buildGpuScene(scene, options.width, options.height);
+  } catch (const SceneError& e) {
+    fprintf(stderr, "%s\n", e.what());
+    return 2;
+  }
+  double parseMs = msSince(t);
+
+  Renderer renderer;
+  double deviceMs = 0, uploadMs = 0, pipelineMs = 0, renderMs = 0, readbackMs = 0, encodeMs = 0;
+  ImageRGBA8 image;
+  size_t nonFinite = 0;
+  try {
+    createRenderer(renderer, {options.device, options.validate});
+    deviceMs = msSince(t);
+    uploadScene(renderer, gpuScene);
+    uploadMs = msSince(t);
+    preparePipeline(renderer, gpuScene.textureKinds, OUTPUT_SHADED);
+    pipelineMs = msSince(t);
+    renderFrame(renderer);
+    renderMs = msSince(t);
+    readbackFrame(renderer);
+    image = encodeSrgb(framePixels(renderer), int(options.width), int(options.height), &nonFinite);
+    readbackMs = msSince(t);
+    int validationErrors = renderer.device.validationErrors;
+    destroyRenderer(renderer);
+    if (validationErrors > 0) {
+      fprintf(stderr, "raytex: %d Vulkan validation error(s)\n", validationErrors);
+      return 1;
+    }
+  } catch (const std::exception& e) {
+    fprintf(stderr, "raytex: %s\n", e.what());
+    destroyRenderer(renderer);
+    return 1;
+  }
+  if (nonFinite > 0)
+    fprintf(stderr, "warning: %zu non-finite colour values (written as black)\n", nonFinite);
+
+  try {
+    writePngAtomic(options.output, image);
+  } catch (const std::exception& e) {
+    fprintf(stderr, "raytex: %s\n", e.what());
+    return 1;
+  }
+  encodeMs = msSince(t);
+  if (options.stats)
+    printf("device %.1f ms | parse %.1f ms | upload %.1f ms | pipeline %.1f ms | render %.1f ms | "
+           "readback %.1f ms | encode %.1f ms | %ux%u\n",
+           deviceMs, parseMs, uploadMs, pipelineMs, renderMs, readbackMs, encodeMs, options.width,
+           options.height);
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<std::string> args(argv + 1, argv + argc);
+  CliArgs cli;
+  std::string error;
+  if (!parseCli(args, &cli, &error)) {
+    fprintf(stderr, "raytex: %s\n", error.c_str());
+    return 2;
+  }
+  switch (cli.command) {
+    case CliCommand::Help:
+      fputs(usageText(), stdout);
+      return 0;
+    case CliCommand::Version:
+      puts("raytex 0.1.0");
+      return 0;
+    case CliCommand::Devices:
+      fputs(listDevices().c_str(), stdout);
+      return 0;
+    case CliCommand::Render:
+      return runRender(cli.render);
+  }
+  return 1;
+}

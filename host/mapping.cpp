@@ -1,0 +1,57 @@
+#include "mapping.h"
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+#include <cmath>
+#include <stdexcept>
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+
+bool isFinite(glm::dvec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+}  // namespace
+
+PlaneFrame planeFrame(glm::dvec3 normal, double distance) {
+  // Divide by the largest |component| first so that lengths like 1e-200 or 1e200
+  // do not underflow or overflow when squared.
+  const double largest = std::fmax(std::fabs(normal.x), std::fmax(std::fabs(normal.y), std::fabs(normal.z)));
+  if (!isFinite(normal) || !std::isfinite(distance) || !(largest > 0.0))
+    throw std::invalid_argument("plane normal must be finite and non-zero");
+  const glm::dvec3 scaled = normal / largest;
+  const double length = glm::length(scaled);
+  PlaneFrame f;
+  f.normal = scaled / length;
+  f.distance = distance / largest / length;
+  const glm::dvec3 n = f.normal;
+  // Helper axis: +x unless n is within 45 degrees of the x axis, then +z.
+  // Either way the projected helper has squared length >= 1/2.
+  const glm::dvec3 helper = (2.0 * n.x * n.x <= 1.0) ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 0, 1);
+  f.tangent = glm::normalize(helper - glm::dot(helper, n) * n);
+  f.binormal = glm::normalize(glm::cross(f.tangent, n));
+  return f;
+}
+
+TexCoordD planeTexCoord(const PlaneFrame& frame, double texScale, glm::dvec3 p) {
+  if (!(texScale > 0.0)) throw std::invalid_argument("tex_scale must be > 0");
+  const glm::dvec3 origin = frame.distance * frame.normal;  // o' = d n        (6)
+  const glm::dvec3 r = p - origin;
+  const double up = glm::dot(r, frame.tangent);  // u_p = (p - o') . t     (1)
+  const double vp = glm::dot(r, frame.binormal);  // v_p = (p - o') . b
+  const double us = up / texScale, vs = vp / texScale;
+  TexCoordD tc;
+  tc.tile = glm::dvec2(std::floor(us), std::floor(vs));
+  tc.uv = glm::dvec2(us - tc.tile.x, vs - tc.tile.y);  // u = u_p/s - floor(u_p/s)  (2)
+  tc.solid = p / texScale;
+  return tc;
+}
+
+TexCoordD sphereTexCoord(glm::dvec3 n) {
+  const double phi = (n.x == 0.0 && n.z == 0.0) ? 0.0 : std::atan2(n.z, n.x);  // (7)
+  const double theta = std::asin(std::fmin(std::fmax(n.y, -1.0), 1.0));
+  TexCoordD tc;
+  tc.uv = glm::dvec2((phi + kPi) / (2.0 * kPi), (theta + 0.5 * kPi) / kPi);  // (8)
+  tc.tile = glm::dvec2(0.0);
+  tc.solid = (n + 1.0) * 0.5;  // (9)
+  return tc;
+}

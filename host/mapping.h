@@ -1,0 +1,53 @@
+// Texture coordinates in double precision: the CPU oracle of shaders/mapping.glsl,
+// following the course notes' equations directly (texture-mapping-notes eqs 1-9).
+#pragma once
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+// The texture frame of the plane x . normal = distance.
+//
+// Basis rule (planeFrame): n = normalize(normal);
+//   helper h = +x if n_x^2 <= 1/2, else +z        (|n_x| > 1/sqrt(2): n is within 45 deg of +-x)
+//   tangent  t = normalize(h - (h . n) n)          (h projected onto the plane; |h - (h.n)n|^2 >= 1/2,
+//                                                    so it is defined, finite and well conditioned for
+//                                                    EVERY unit normal: no cross(n, up) singularity)
+//   binormal b = t x n                              (so (t, n, b) is right-handed like (x, y, z))
+// For n = (0,1,0): t = +x, b = x X y = +z exactly (u runs along x, v along z on the floor).
+// Other examples: n = (0,-1,0): t = +x, b = -z; n = (0,0,+-1): t = +x, b = -+y;
+// n = (+-1,0,0): t = +z, b = +-y.
+// The host uploads this frame (gpu::Plane.tangentScale / binormal); the GPU never builds one.
+struct PlaneFrame {
+  glm::dvec3 normal;    // unit
+  glm::dvec3 tangent;   // unit, orthogonal to normal
+  glm::dvec3 binormal;  // unit, = tangent x normal
+  double distance;      // the plane is x . normal = distance (after normalising)
+};
+
+// Throws std::invalid_argument if normal is zero or not finite. A non-unit normal is
+// normalised and `distance` divided by its length, so the plane stays the same.
+PlaneFrame planeFrame(glm::dvec3 normal, double distance);
+
+// A texture coordinate in every form a texture may want.
+struct TexCoordD {
+  glm::dvec2 uv;     // 2D coordinate in [0,1] (u across, v up the image)
+  glm::dvec2 tile;   // plane: index of the repeated tile (floor(u_p/s), floor(v_p/s)); sphere: 0
+  glm::dvec3 solid;  // 3D coordinate of solid textures: plane p / s, sphere (n + 1) / 2
+};
+
+// Notes eqs (6), (1), (2): o' = d n, u_p = (p - o') . t, v_p = (p - o') . b,
+// uv = (u_p/s - floor(u_p/s), v_p/s - floor(v_p/s)); tile = the floors; solid = p / s.
+// uv may round to exactly 1.0 when u_p/s is a tiny negative number (as GLSL fract may):
+// tile + uv is still the unwrapped coordinate, so checker parity stays right.
+// Throws std::invalid_argument unless texScale > 0.
+TexCoordD planeTexCoord(const PlaneFrame& frame, double texScale, glm::dvec3 p);
+
+// Notes eqs (7), (8), (9) for the unit normal n at a sphere hit (not normalised here):
+//   phi = atan2(n_z, n_x), theta = asin(clamp(n_y, -1, 1)),
+//   u = (phi + pi) / (2 pi), v = (theta + pi/2) / pi; tile = 0; solid = (n + 1) / 2.
+// At the poles (n_x == n_z == 0) phi is defined as 0, so u = 0.5 (atan2(0, 0) is
+// undefined in GLSL). On the -x meridian, u = 1 for n_z = +0 and u = 0 for n_z = -0
+// (atan2's sign of zero; the GPU gives either, REPEAT makes them the same texel).
+// The GLSL computes theta as atan(n_y, |n_xz|) (the same angle for a unit n; lavapipe's
+// float asin is off by up to 2e-4 rad), see shaders/mapping.glsl.
+TexCoordD sphereTexCoord(glm::dvec3 n);

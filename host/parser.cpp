@@ -1,0 +1,475 @@
+// Recursive-descent parser of the .cfg scene format (docs/scene-format.md), pbrt style:
+// cfg::Tokenizer (tokenizer.h) puts a FileLoc on every token; Parser reads blocks into a Scene.
+// Every error is a SceneError "file:line:col: message"; nothing else is thrown.
+#include "parser.h"
+
+#include "texture.h"
+#include "tokenizer.h"
+
+#include <glm/geometric.hpp>
+
+#include <cmath>
+#include <deque>
+#include <filesystem>
+#include <fstream>
+#include <initializer_list>
+#include <map>
+#include <sstream>
+#include <utility>
+
+namespace fs = std::filesystem;
+using cfg::Tok;
+using cfg::Token;
+using cfg::describe;
+using cfg::isNonFiniteWord;
+
+namespace {
+
+constexpr size_t kMaxIncludeDepth = 16;
+
+[[noreturn]] void fail(const FileLoc& loc, const std::string& message) { throw SceneError(loc, message); }
+
+std::string locString(const FileLoc& loc) {
+  return loc.file + ":" + std::to_string(loc.line) + ":" + std::to_string(loc.column);
+}
+
+bool readFile(const std::string& path, std::string* out) {
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec)) return false;
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return false;
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  *out = ss.str();
+  return !in.bad();
+}
+
+// Identity of a file for cycle detection.
+std::string canonicalKey(const std::string& path) {
+  std::error_code ec;
+  fs::path p = fs::weakly_canonical(path, ec);
+  if (ec) p = fs::absolute(path, ec).lexically_normal();
+  return p.string();
+}
+
+struct OpenFile {
+  std::string key;   // canonical path
+  std::string name;  // as shown in messages
+};
+
+struct State {
+  Scene scene;
+  std::map<std::string, int> materialIndex;
+  std::vector<OpenFile> includeStack;
+  FileLoc cameraLoc, backgroundLoc, ambientLoc;  // line 0: not given yet
+};
+
+void parseText(State& st, const std::string& text, const std::string& file);
+
+// Words that cannot name a material (they would read as keys or blocks).
+bool isReserved(const std::string& w) {
+  static const char* const words[] = {"sphere", "plane", "camera",    "light",    "material", "background",
+                                      "ambient_light", "center", "radius", "normal", "distance", "tex_scale",
+                                      "texture"};
+  for (const char* r : words)
+    if (w == r) return true;
+  return isNonFiniteWord(w);
+}
+
+bool isBlockKeyword(const std::string& w) {
+  return w == "sphere" || w == "plane" || w == "camera" || w == "light" || w == "material";
+}
+
+// Which texture keys apply to which kinds (docs/scene-format.md).
+bool textureKeyApplies(TextureKind kind, const std::string& key) {
+  if (key == "file") return kind == TextureKind::Image;
+  if (kind == TextureKind::Image) return false;
+  if (key == "color1" || key == "color2") return true;
+  if (key == "squares") return kind == TextureKind::Checker || kind == TextureKind::SolidChecker;
+  if (kind == TextureKind::Checker || kind == TextureKind::SolidChecker) return false;
+  if (key == "scale") return true;
+  return kind != TextureKind::Noise;  // strength, octaves
+}
+
+class Parser {
+ public:
+  Parser(State& st, const std::string& text, const std::string& file) : st_(st), tok_(text, file), file_(file) {}
+
+  void parseFile() {
+    for (;;) {
+      const Token& t = peek();
+      if (t.kind == Tok::End) return;
+      if (t.kind == Tok::Include) {
+        parseInclude();
+        continue;
+      }
+      if (t.kind != Tok::Ident)
+        fail(t.loc, "expected sphere, plane, material, camera, light, background, ambient_light or #include, got " +
+                        describe(t));
+      Token kw = take();
+      if (kw.text == "sphere") parseSphere(kw);
+      else if (kw.text == "plane") parsePlane(kw);
+      else if (kw.text == "material") parseMaterial();
+      else if (kw.text == "camera") parseCamera(kw);
+      else if (kw.text == "light") parseLight();
+      else if (kw.text == "background") topColor(kw, &st_.scene.background, &st_.backgroundLoc);
+      else if (kw.text == "ambient_light") topColor(kw, &st_.scene.ambientLight, &st_.ambientLoc);
+      else fail(kw.loc, "unknown top-level keyword '" + kw.text + "'");
+    }
+  }
+
+ private:
+  using Seen = std::map<std::string, FileLoc>;
+
+  const Token& peek(size_t k = 0) {
+    while (ahead_.size() <= k) ahead_.push_back(tok_.next());  // deque: references stay valid
+    return ahead_[k];
+  }
+
+  Token take() {
+    peek();
+    Token t = std::move(ahead_.front());
+    ahead_.pop_front();
+    prevEnd_ = t.loc;
+    prevEnd_.column += t.length;
+    return t;
+  }
+
+  Token expect(Tok kind, const std::string& what) {
+    if (peek().kind != kind) fail(peek().loc, "expected " + what + ", got " + describe(peek()));
+    return take();
+  }
+
+  // A missing ';' is reported just after the end of the previous token.
+  void semicolon(const std::string& after) {
+    if (peek().kind != Tok::Semi) fail(prevEnd_, "expected ';' after " + after + ", got " + describe(peek()));
+    take();
+  }
+
+  // After a key: '=' then a duplicate check.
+  void assign(const Token& key, Seen& seen, const std::string& where) {
+    expect(Tok::Equals, "'=' after '" + key.text + "'");
+    auto it = seen.find(key.text);
+    if (it != seen.end())
+      fail(key.loc, "duplicate key '" + key.text + "' in " + where + " (first given at " + locString(it->second) + ")");
+    seen[key.text] = key.loc;
+  }
+
+  double number(FileLoc* loc = nullptr, std::string* text = nullptr) {
+    const Token& t = peek();
+    if (t.kind == Tok::Ident && isNonFiniteWord(t.text)) fail(t.loc, "'" + t.text + "' is not a finite number");
+    if (t.kind != Tok::Number) fail(t.loc, "expected a number, got " + describe(t));
+    if (loc) *loc = t.loc;
+    if (text) *text = t.text;
+    return take().number;
+  }
+
+  glm::vec3 tuple(FileLoc* loc = nullptr) {
+    Token open = expect(Tok::LParen, "a tuple '(x, y, z)'");
+    if (loc) *loc = open.loc;
+    std::vector<double> v;
+    if (peek().kind != Tok::RParen) {
+      for (;;) {
+        v.push_back(number());
+        if (peek().kind == Tok::RParen) break;
+        expect(Tok::Comma, "',' or ')' in tuple");
+      }
+    }
+    take();
+    if (v.size() != 3) fail(open.loc, "expected 3 numbers, got " + std::to_string(v.size()));
+    return glm::vec3(float(v[0]), float(v[1]), float(v[2]));
+  }
+
+  glm::vec3 color() {
+    FileLoc loc;
+    glm::vec3 c = tuple(&loc);
+    if (c.x < 0.0f || c.y < 0.0f || c.z < 0.0f) fail(loc, "colour components must be >= 0");
+    return c;
+  }
+
+  double positive(const std::string& what) {
+    FileLoc loc;
+    std::string text;
+    double v = number(&loc, &text);
+    if (!(v > 0.0)) fail(loc, what + " must be > 0, got " + text);
+    return v;
+  }
+
+  // "{ statement* }" with an optional ';' after the '}'. stmt(key) handles a statement
+  // that starts with the identifier `key` (already taken).
+  template <typename F>
+  void block(const std::string& what, F stmt) {
+    Token open = expect(Tok::LBrace, "'{' to open the " + what);
+    for (;;) {
+      const Token& t = peek();
+      if (t.kind == Tok::RBrace) break;
+      if (t.kind == Tok::End) fail(open.loc, "'{' of " + what + " is never closed");
+      if (t.kind == Tok::Include) fail(t.loc, "#include is only allowed at top level");
+      if (t.kind != Tok::Ident) fail(t.loc, "expected a key or '}' in " + what + ", got " + describe(t));
+      if (isBlockKeyword(t.text) && peek(1).kind != Tok::Equals && peek(1).kind != Tok::Semi)
+        fail(open.loc, "'{' of " + what + " is never closed (a '" + t.text + "' block starts at " +
+                           std::to_string(t.loc.line) + ":" + std::to_string(t.loc.column) + ")");
+      stmt(take());
+    }
+    take();
+    if (peek().kind == Tok::Semi) take();
+  }
+
+  int lookupMaterial(const Token& name) {
+    auto it = st_.materialIndex.find(name.text);
+    if (it == st_.materialIndex.end()) fail(name.loc, "unknown material '" + name.text + "'");
+    return it->second;
+  }
+
+  // `material = NAME;` or a bare `NAME;` inside sphere/plane; the last one wins.
+  void materialStatement(const Token& key, int* material, const std::string& where) {
+    if (key.text == "material") {
+      expect(Tok::Equals, "'=' after 'material'");
+      *material = lookupMaterial(expect(Tok::Ident, "a material name"));
+      semicolon("the material name");
+      return;
+    }
+    if (peek().kind == Tok::Equals) fail(key.loc, "unknown key '" + key.text + "' in " + where);
+    *material = lookupMaterial(key);
+    semicolon("material name '" + key.text + "'");
+  }
+
+  void parseSphere(const Token& kw) {
+    Sphere s;
+    s.loc = kw.loc;
+    Seen seen;
+    block("sphere", [&](const Token& key) {
+      if (key.text == "center") {
+        assign(key, seen, "sphere");
+        s.center = tuple();
+      } else if (key.text == "radius") {
+        assign(key, seen, "sphere");
+        s.radius = float(positive("sphere radius"));
+      } else {
+        materialStatement(key, &s.material, "sphere");
+        return;
+      }
+      semicolon("the value of '" + key.text + "'");
+    });
+    st_.scene.spheres.push_back(s);
+  }
+
+  void parsePlane(const Token& kw) {
+    Plane p;
+    p.loc = kw.loc;
+    Seen seen;
+    block("plane", [&](const Token& key) {
+      if (key.text == "normal") {
+        assign(key, seen, "plane");
+        FileLoc loc;
+        glm::vec3 n = tuple(&loc);
+        double len = std::sqrt(double(n.x) * n.x + double(n.y) * n.y + double(n.z) * n.z);
+        if (!(len > 0.0)) fail(loc, "plane normal must not be zero");
+        p.normal = glm::vec3(float(n.x / len), float(n.y / len), float(n.z / len));
+      } else if (key.text == "distance") {
+        assign(key, seen, "plane");
+        p.distance = float(number());
+      } else if (key.text == "tex_scale") {
+        assign(key, seen, "plane");
+        p.texScale = float(positive("tex_scale"));
+      } else {
+        materialStatement(key, &p.material, "plane");
+        return;
+      }
+      semicolon("the value of '" + key.text + "'");
+    });
+    st_.scene.planes.push_back(p);
+  }
+
+  void parseMaterial() {
+    Token name = expect(Tok::Ident, "a material name after 'material'");
+    if (isReserved(name.text)) fail(name.loc, "'" + name.text + "' is a reserved word and cannot name a material");
+    auto it = st_.materialIndex.find(name.text);
+    if (it != st_.materialIndex.end())
+      fail(name.loc, "duplicate material '" + name.text + "' (first defined at " +
+                         locString(st_.scene.materials[size_t(it->second)].loc) + ")");
+    Material m = defaultMaterial();
+    m.name = name.text;
+    m.loc = name.loc;
+    Seen seen;
+    std::string where = "material '" + name.text + "'";
+    block(where, [&](const Token& key) {
+      if (key.text == "ambient" || key.text == "diffuse" || key.text == "specular") {
+        assign(key, seen, where);
+        glm::vec3 c = color();
+        (key.text == "ambient" ? m.ambient : key.text == "diffuse" ? m.diffuse : m.specular) = c;
+      } else if (key.text == "shininess") {
+        assign(key, seen, where);
+        FileLoc loc;
+        std::string text;
+        double v = number(&loc, &text);
+        if (v < 0.0) fail(loc, "shininess must be >= 0, got " + text);
+        m.shininess = float(v);
+      } else if (key.text == "texture") {
+        assign(key, seen, where);
+        m.texture = parseTexture();
+        return;
+      } else {
+        fail(key.loc, "unknown key '" + key.text + "' in " + where);
+      }
+      semicolon("the value of '" + key.text + "'");
+    });
+    st_.materialIndex[m.name] = int(st_.scene.materials.size());
+    st_.scene.materials.push_back(m);
+  }
+
+  // KIND { key = value; ... } [;]   or   KIND;
+  TextureDesc parseTexture() {
+    Token kindTok = expect(Tok::Ident, "a texture kind after 'texture ='");
+    TextureKind kind;
+    if (!textureKindFromName(kindTok.text, &kind))
+      fail(kindTok.loc, "unknown texture kind '" + kindTok.text +
+                            "' (expected image, checker, solid_checker, noise, marble, wood, turbulence or dturbulence)");
+    TextureDesc t = defaultTexture(kind);
+    t.loc = kindTok.loc;
+    std::string where = std::string(textureKindName(kind)) + " texture";
+    bool hasFile = false;
+    if (peek().kind == Tok::Semi) {
+      take();
+    } else {
+      Seen seen;
+      block(where, [&](const Token& key) {
+        const std::string& k = key.text;
+        bool known = k == "color1" || k == "color2" || k == "scale" || k == "strength" || k == "squares" ||
+                     k == "octaves" || k == "file";
+        if (!known) fail(key.loc, "unknown key '" + k + "' in " + where);
+        if (!textureKeyApplies(kind, k))
+          fail(key.loc, "'" + k + "' does not apply to " + textureKindName(kind) + " textures");
+        assign(key, seen, where);
+        if (k == "color1") t.color1 = color();
+        else if (k == "color2") t.color2 = color();
+        else if (k == "scale") t.scale = float(positive("scale"));
+        else if (k == "squares") t.squares = float(positive("squares"));
+        else if (k == "strength") t.strength = float(number());
+        else if (k == "octaves") {
+          FileLoc loc;
+          std::string text;
+          double v = number(&loc, &text);
+          if (!(v >= 1.0 && v <= 16.0 && v == std::floor(v)))
+            fail(loc, "octaves must be a whole number from 1 to 16, got " + text);
+          t.octaves = int(v);
+        } else {  // file
+          Token f = expect(Tok::String, "a file name in quotes");
+          if (f.text.empty()) fail(f.loc, "empty file name");
+          t.imagePath = (fs::path(file_).parent_path() / f.text).lexically_normal().string();
+          t.loc = f.loc;
+          hasFile = true;
+        }
+        semicolon("the value of '" + k + "'");
+      });
+    }
+    if (kind == TextureKind::Image && !hasFile) fail(kindTok.loc, "image texture needs 'file = \"path\";'");
+    return t;
+  }
+
+  void parseCamera(const Token& kw) {
+    if (st_.cameraLoc.line > 0) fail(kw.loc, "duplicate camera (first defined at " + locString(st_.cameraLoc) + ")");
+    st_.cameraLoc = kw.loc;
+    Camera& c = st_.scene.camera;
+    FileLoc eyeLoc = kw.loc, lookatLoc = kw.loc, upLoc = kw.loc;
+    Seen seen;
+    block("camera", [&](const Token& key) {
+      assignKnown(key, seen, "camera", {"eye", "lookat", "up", "fov"});
+      if (key.text == "eye") {
+        c.eye = tuple(&eyeLoc);
+      } else if (key.text == "lookat") {
+        c.lookat = tuple(&lookatLoc);
+      } else if (key.text == "up") {
+        c.up = tuple(&upLoc);
+      } else {
+        FileLoc loc;
+        std::string text;
+        double v = number(&loc, &text);
+        if (!(v > 0.0 && v < 180.0)) fail(loc, "fov must be between 0 and 180 degrees (exclusive), got " + text);
+        c.fovY = float(v);
+      }
+      semicolon("the value of '" + key.text + "'");
+    });
+    glm::dvec3 dir = glm::dvec3(c.lookat) - glm::dvec3(c.eye);
+    if (!(glm::length(dir) > 0.0)) {
+      bool lookatLater = std::make_pair(lookatLoc.line, lookatLoc.column) > std::make_pair(eyeLoc.line, eyeLoc.column);
+      fail(lookatLater ? lookatLoc : eyeLoc, "camera eye and lookat must differ");
+    }
+    glm::dvec3 up(c.up);
+    double upLen = glm::length(up);
+    if (!(upLen > 0.0) || glm::length(glm::cross(dir / glm::length(dir), up / upLen)) < 1e-6)
+      fail(upLoc, "camera up must be non-zero and not parallel to the view direction");
+  }
+
+  void parseLight() {
+    Light l;
+    Seen seen;
+    block("light", [&](const Token& key) {
+      assignKnown(key, seen, "light", {"position", "color"});
+      if (key.text == "position") l.position = tuple();
+      else l.color = color();
+      semicolon("the value of '" + key.text + "'");
+    });
+    st_.scene.lights.push_back(l);
+  }
+
+  void assignKnown(const Token& key, Seen& seen, const std::string& where, std::initializer_list<const char*> keys) {
+    for (const char* k : keys)
+      if (key.text == k) return assign(key, seen, where);
+    fail(key.loc, "unknown key '" + key.text + "' in " + where);
+  }
+
+  void topColor(const Token& kw, glm::vec3* out, FileLoc* given) {
+    if (given->line > 0) fail(kw.loc, "duplicate " + kw.text + " (first given at " + locString(*given) + ")");
+    *given = kw.loc;
+    expect(Tok::Equals, "'=' after '" + kw.text + "'");
+    *out = color();
+    semicolon("the value of '" + kw.text + "'");
+  }
+
+  void parseInclude() {
+    Token directive = take();
+    Token name = expect(Tok::String, "a file name in quotes after #include");
+    if (name.text.empty()) fail(name.loc, "empty file name");
+    std::string path = (fs::path(file_).parent_path() / name.text).string();
+    if (st_.includeStack.size() > kMaxIncludeDepth)
+      fail(directive.loc, "#include nested more than " + std::to_string(kMaxIncludeDepth) + " levels deep");
+    std::string key = canonicalKey(path);
+    for (size_t i = 0; i < st_.includeStack.size(); ++i) {
+      if (st_.includeStack[i].key != key) continue;
+      std::string chain;
+      for (size_t j = i; j < st_.includeStack.size(); ++j) chain += st_.includeStack[j].name + " -> ";
+      fail(directive.loc, "cyclic #include of '" + path + "' (" + chain + path + ")");
+    }
+    std::string text;
+    if (!readFile(path, &text)) fail(directive.loc, "cannot open included file '" + path + "'");
+    parseText(st_, text, path);
+  }
+
+  State& st_;
+  cfg::Tokenizer tok_;
+  std::string file_;
+  std::deque<Token> ahead_;
+  FileLoc prevEnd_;
+};
+
+void parseText(State& st, const std::string& text, const std::string& file) {
+  st.includeStack.push_back(OpenFile{canonicalKey(file), file});
+  Parser(st, text, file).parseFile();
+  st.includeStack.pop_back();
+}
+
+}  // namespace
+
+Scene parseSceneText(const std::string& text, const std::string& fileName) {
+  State st;
+  st.scene.path = fileName;
+  parseText(st, text, fileName);
+  return std::move(st.scene);
+}
+
+Scene parseSceneFile(const std::string& path) {
+  std::string text;
+  if (!readFile(path, &text)) throw SceneError(FileLoc{path, 0, 0}, "cannot open scene file '" + path + "'");
+  return parseSceneText(text, path);
+}

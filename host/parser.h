@@ -1,0 +1,14 @@
+// Parser of the course's .cfg scene format (docs/scene-format.md).
+// Knows nothing of Vulkan. Every error is a SceneError "file:line:col: message".
+#pragma once
+
+#include "scene.h"
+
+#include <string>
+
+// Reads and parses a scene file; #include paths resolve relative to the including file.
+Scene parseSceneFile(const std::string& path);
+
+// Parses scene text as if it were the file `fileName` (used for error locations and
+// to resolve #include and image paths relative to fileName's directory).
+Scene parseSceneText(const std::string& text, const std::string& fileName);

@@ -1,0 +1,191 @@
+#include "renderer.h"
+
+#include "common.h"
+#include "pipeline.h"
+
+#include <vector>
+
+namespace {
+
+void writeDescriptors(Renderer& r) {
+  VkDescriptorImageInfo outputInfo{VK_NULL_HANDLE, r.output.view, VK_IMAGE_LAYOUT_GENERAL};
+  VkDescriptorImageInfo imagesInfo{r.sampler, r.images.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+  auto bufferInfo = [](const Buffer& b) { return VkDescriptorBufferInfo{b.buffer, 0, VK_WHOLE_SIZE}; };
+  const VkDescriptorBufferInfo buffers[] = {bufferInfo(r.frame),     bufferInfo(r.spheres),
+                                            bufferInfo(r.planes),    bufferInfo(r.materials),
+                                            bufferInfo(r.lights),    bufferInfo(r.noise)};
+  const uint32_t bufferBindings[] = {BINDING_FRAME,     BINDING_SPHERES, BINDING_PLANES,
+                                     BINDING_MATERIALS, BINDING_LIGHTS,  BINDING_NOISE};
+
+  std::vector<VkWriteDescriptorSet> writes;
+  auto write = [&](uint32_t binding, VkDescriptorType type) {
+    VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+    w.dstSet = r.descriptorSet;
+    w.dstBinding = binding;
+    w.descriptorCount = 1;
+    w.descriptorType = type;
+    writes.push_back(w);
+    return &writes.back();
+  };
+  writes.reserve(8);
+  write(BINDING_OUTPUT, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE)->pImageInfo = &outputInfo;
+  write(BINDING_IMAGES, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER)->pImageInfo = &imagesInfo;
+  for (size_t i = 0; i < std::size(buffers); ++i) {
+    bool uniform = bufferBindings[i] == BINDING_FRAME || bufferBindings[i] == BINDING_NOISE;
+    write(bufferBindings[i], uniform ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER
+                                     : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER)->pBufferInfo = &buffers[i];
+  }
+  vkUpdateDescriptorSets(r.device.device, uint32_t(writes.size()), writes.data(), 0, nullptr);
+}
+
+// Replaces `buffer` with one holding `data` (empty arrays get a placeholder element).
+template <typename T>
+void replaceBuffer(Renderer& r, Buffer& buffer, const T* data, size_t count, VkBufferUsageFlags usage) {
+  destroyBuffer(r.device, buffer);
+  buffer = createBuffer(r.device, sizeof(T) * count, usage);
+  writeBuffer(buffer, data, sizeof(T) * count);
+}
+
+void createOutput(Renderer& r, uint32_t width, uint32_t height) {
+  destroyImage(r.device, r.output);
+  destroyBuffer(r.device, r.readback);
+  r.output = createImage(r.device, width, height, 1, VK_FORMAT_R32G32B32A32_SFLOAT,
+                         VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, false);
+  r.readback = createBuffer(r.device, VkDeviceSize(width) * height * 16, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+  VkCommandBuffer cmd = beginCommands(r.device);
+  imageBarrier(cmd, r.output.image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL, 0,
+               VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT,
+               VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
+  submitAndWait(r.device, cmd);
+  r.width = width;
+  r.height = height;
+}
+
+}  // namespace
+
+void createRenderer(Renderer& r, const DeviceOptions& options) {
+  createDevice(r.device, options);
+  r.setLayout = createTraceSetLayout(r.device);
+
+  VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+  layoutInfo.setLayoutCount = 1;
+  layoutInfo.pSetLayouts = &r.setLayout;
+  VK_CHECK(vkCreatePipelineLayout(r.device.device, &layoutInfo, nullptr, &r.pipelineLayout));
+
+  const VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1},
+                                        {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 2},
+                                        {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 4},
+                                        {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1}};
+  VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+  poolInfo.maxSets = 1;
+  poolInfo.poolSizeCount = uint32_t(std::size(sizes));
+  poolInfo.pPoolSizes = sizes;
+  VK_CHECK(vkCreateDescriptorPool(r.device.device, &poolInfo, nullptr, &r.descriptorPool));
+  VkDescriptorSetAllocateInfo setInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+  setInfo.descriptorPool = r.descriptorPool;
+  setInfo.descriptorSetCount = 1;
+  setInfo.pSetLayouts = &r.setLayout;
+  VK_CHECK(vkAllocateDescriptorSets(r.device.device, &setInfo, &r.descriptorSet));
+
+  // Bilinear, repeating: u wraps around the sphere and tiles repeat on planes.
+  VkSamplerCreateInfo samplerInfo{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
+  samplerInfo.magFilter = VK_FILTER_LINEAR;
+  samplerInfo.minFilter = VK_FILTER_LINEAR;
+  samplerInfo.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
+  samplerInfo.addressModeU = VK_SAMPLER_ADDRESS_MODE_REPEAT;
+  samplerInfo.addressModeV = VK_SAMPLER_ADDRESS_MODE_REPEAT;
+  samplerInfo.addressModeW = VK_SAMPLER_ADDRESS_MODE_REPEAT;
+  samplerInfo.maxLod = 0.0f;
+  VK_CHECK(vkCreateSampler(r.device.device, &samplerInfo, nullptr, &r.sampler));
+}
+
+void destroyRenderer(Renderer& r) {
+  if (r.device.device) {
+    VkDevice d = r.device.device;
+    vkDeviceWaitIdle(d);
+    if (r.pipeline) vkDestroyPipeline(d, r.pipeline, nullptr);
+    for (Buffer* b : {&r.frame, &r.spheres, &r.planes, &r.materials, &r.lights, &r.noise, &r.readback})
+      destroyBuffer(r.device, *b);
+    destroyImage(r.device, r.output);
+    destroyImage(r.device, r.images);
+    if (r.sampler) vkDestroySampler(d, r.sampler, nullptr);
+    if (r.descriptorPool) vkDestroyDescriptorPool(d, r.descriptorPool, nullptr);
+    if (r.pipelineLayout) vkDestroyPipelineLayout(d, r.pipelineLayout, nullptr);
+    if (r.setLayout) vkDestroyDescriptorSetLayout(d, r.setLayout, nullptr);
+  }
+  destroyDevice(r.device);
+  r = Renderer{};
+}
+
+void uploadScene(Renderer& r, const GpuScene& s) {
+  VK_CHECK(vkDeviceWaitIdle(r.device.device));
+  const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+  const VkBufferUsageFlags uniform = VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT;
+  replaceBuffer(r, r.frame, &s.frame, 1, uniform);
+  replaceBuffer(r, r.spheres, s.spheres.data(), s.spheres.size(), storage);
+  replaceBuffer(r, r.planes, s.planes.data(), s.planes.size(), storage);
+  replaceBuffer(r, r.materials, s.materials.data(), s.materials.size(), storage);
+  replaceBuffer(r, r.lights, s.lights.data(), s.lights.size(), storage);
+  // Full size even when unused (2 KiB): the kernel declares the whole block.
+  replaceBuffer(r, r.noise, &s.noise, 1, uniform);
+
+  destroyImage(r.device, r.images);
+  static const uint8_t placeholder[4] = {255, 0, 255, 255};
+  bool hasImages = s.imageLayers > 0;
+  uint32_t w = hasImages ? uint32_t(s.imageWidth) : 1, h = hasImages ? uint32_t(s.imageHeight) : 1;
+  uint32_t layers = hasImages ? uint32_t(s.imageLayers) : 1;
+  r.images = createImage(r.device, w, h, layers, VK_FORMAT_R8G8B8A8_SRGB,
+                         VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT, true);
+  uploadImageLayers(r.device, r.images, hasImages ? s.imagePixels.data() : placeholder,
+                    VkDeviceSize(w) * h * layers * 4);
+
+  if (s.frame.width != r.width || s.frame.height != r.height || !r.output.image)
+    createOutput(r, s.frame.width, s.frame.height);
+  writeDescriptors(r);
+}
+
+void preparePipeline(Renderer& r, uint32_t textureKinds, uint32_t outputMode) {
+  if (r.pipeline && r.pipelineKinds == textureKinds && r.pipelineMode == outputMode) return;
+  if (r.pipeline) {
+    VK_CHECK(vkDeviceWaitIdle(r.device.device));
+    vkDestroyPipeline(r.device.device, r.pipeline, nullptr);
+    r.pipeline = VK_NULL_HANDLE;
+  }
+  r.pipeline = createTracePipeline(r.device, r.pipelineLayout, textureKinds, outputMode);
+  r.pipelineKinds = textureKinds;
+  r.pipelineMode = outputMode;
+}
+
+void renderFrame(Renderer& r) {
+  VkCommandBuffer cmd = beginCommands(r.device);
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, r.pipeline);
+  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, r.pipelineLayout, 0, 1,
+                          &r.descriptorSet, 0, nullptr);
+  vkCmdDispatch(cmd, (r.width + WORKGROUP_X - 1) / WORKGROUP_X,
+                (r.height + WORKGROUP_Y - 1) / WORKGROUP_Y, 1);
+  submitAndWait(r.device, cmd);
+}
+
+void readbackFrame(Renderer& r) {
+  VkCommandBuffer cmd = beginCommands(r.device);
+  // The kernel's writes (an earlier, completed submission) become visible to the copy.
+  imageBarrier(cmd, r.output.image, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+               VK_ACCESS_SHADER_WRITE_BIT, VK_ACCESS_TRANSFER_READ_BIT,
+               VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT);
+  VkBufferImageCopy region{};
+  region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+  region.imageExtent = {r.width, r.height, 1};
+  vkCmdCopyImageToBuffer(cmd, r.output.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, r.readback.buffer, 1, &region);
+  VkMemoryBarrier hostBarrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+  hostBarrier.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+  hostBarrier.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1,
+                       &hostBarrier, 0, nullptr, 0, nullptr);
+  // Back to the kernel's layout; the next frame's writes wait for this read.
+  imageBarrier(cmd, r.output.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_GENERAL,
+               VK_ACCESS_TRANSFER_READ_BIT, VK_ACCESS_SHADER_WRITE_BIT,
+               VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
+  submitAndWait(r.device, cmd);
+}
+
+const float* framePixels(const Renderer& r) { return static_cast<const float*>(r.readback.data); }

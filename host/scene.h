@@ -1,0 +1,103 @@
+// The scene model: what a .cfg file describes, independent of any backend.
+// Parsed by parser.cpp, packed for the GPU by gpu_scene.cpp, evaluated on the
+// CPU by the reference code in mapping.cpp / texture.cpp.
+#pragma once
+
+#include <glm/vec3.hpp>
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+struct FileLoc {
+  std::string file;
+  int line = 0;    // 1-based
+  int column = 0;  // 1-based
+};
+
+// "file:line:col: message", the form every scene error takes.
+std::string formatLoc(const FileLoc& loc, const std::string& message);
+
+struct SceneError : std::runtime_error {
+  FileLoc loc;
+  SceneError(const FileLoc& where, const std::string& message)
+      : std::runtime_error(formatLoc(where, message)), loc(where) {}
+};
+
+// Values match TEX_* in shaders/common.h (checked in gpu_scene.cpp).
+enum class TextureKind {
+  None = 0,
+  Image,
+  Checker,
+  SolidChecker,
+  Noise,
+  Marble,
+  Wood,
+  Turbulence,
+  DTurbulence,
+};
+
+struct TextureDesc {
+  TextureKind kind = TextureKind::None;
+  glm::vec3 color1{1.0f};
+  glm::vec3 color2{0.0f};
+  float scale = 1.0f;     // frequency multiplier of the texture coordinate
+  float strength = 1.0f;  // turbulence amount (marble, wood)
+  float squares = 2.0f;   // checks per side of one texture tile (checker, solid_checker)
+  int octaves = 1;        // noise octaves (turbulence-based kinds)
+  std::string imagePath;  // image: resolved relative to the scene file that names it
+  FileLoc loc;            // where the texture was given, for image load errors
+};
+
+struct Material {
+  std::string name;
+  glm::vec3 ambient{0.1f};
+  glm::vec3 diffuse{0.7f};
+  glm::vec3 specular{0.3f};
+  float shininess = 32.0f;
+  TextureDesc texture;  // kind None: untextured Phong
+  FileLoc loc;
+};
+
+struct Sphere {
+  glm::vec3 center{0.0f};
+  float radius = 1.0f;
+  int material = -1;  // index into Scene::materials; -1: the default material
+  FileLoc loc;
+};
+
+// x . normal = distance. normal is stored unit length.
+struct Plane {
+  glm::vec3 normal{0.0f, 1.0f, 0.0f};
+  float distance = 0.0f;
+  float texScale = 1.0f;  // side of one repeated texture square
+  int material = -1;
+  FileLoc loc;
+};
+
+struct Light {
+  glm::vec3 position{0.0f, 10.0f, 0.0f};
+  glm::vec3 color{1.0f};
+};
+
+// Pinhole camera; fov is the vertical field of view in degrees.
+struct Camera {
+  glm::vec3 eye{0.0f, 0.0f, 10.0f};
+  glm::vec3 lookat{0.0f};
+  glm::vec3 up{0.0f, 1.0f, 0.0f};
+  float fovY = 45.0f;
+};
+
+struct Scene {
+  std::string path;  // the top-level scene file
+  Camera camera;
+  std::vector<Light> lights;
+  glm::vec3 background{0.0f};
+  glm::vec3 ambientLight{1.0f};
+  std::vector<Material> materials;  // every material defined, in order of definition
+  std::vector<Sphere> spheres;
+  std::vector<Plane> planes;
+};
+
+// The material used by objects that name none.
+Material defaultMaterial();

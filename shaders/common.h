@@ -1,0 +1,132 @@
+// Shared between GLSL (#include with GL_GOOGLE_include_directive) and C++.
+// Every struct that crosses the host/GPU boundary is declared here once.
+// Layout rules: std430 for storage buffers, std140 for uniform buffers; all
+// structs are built from vec4/uvec4 and groups of four scalars so both rules
+// and the C++ layout agree. The C++ side static_asserts every size.
+#ifndef RAYTEX_COMMON_H
+#define RAYTEX_COMMON_H
+
+#ifdef __cplusplus
+#include <cstdint>
+#include <glm/vec4.hpp>
+namespace gpu {
+using uint = uint32_t;
+using vec4 = glm::vec4;
+using uvec4 = glm::uvec4;
+#endif
+
+// Compute workgroup: 8x8 measured as fast as 16x8/16x16 on lavapipe.
+#define WORKGROUP_X 8
+#define WORKGROUP_Y 8
+
+// Descriptor bindings (set 0).
+#define BINDING_OUTPUT 0     // rgba32f storage image, linear radiance
+#define BINDING_FRAME 1      // uniform Frame
+#define BINDING_SPHERES 2    // storage Sphere[]
+#define BINDING_PLANES 3     // storage Plane[]
+#define BINDING_MATERIALS 4  // storage Material[]
+#define BINDING_LIGHTS 5     // storage Light[]
+#define BINDING_NOISE 6      // uniform NoiseTable (a UBO: an SSBO is 1.6x slower on lavapipe)
+#define BINDING_IMAGES 7     // sampler2DArray, one layer per image texture
+
+// Texture kinds (Material.textureKind). Bit (1 << kind) of SPEC_TEXTURE_KINDS
+// says the kind is present in the scene; absent kinds compile to nothing.
+#define TEX_NONE 0
+#define TEX_IMAGE 1
+#define TEX_CHECKER 2
+#define TEX_SOLID_CHECKER 3
+#define TEX_NOISE 4
+#define TEX_MARBLE 5
+#define TEX_WOOD 6
+#define TEX_TURBULENCE 7
+#define TEX_DTURBULENCE 8
+#define TEX_KIND_COUNT 9
+
+// Specialisation constant ids.
+#define SPEC_TEXTURE_KINDS 0  // uint bit mask of TEX_* kinds present
+#define SPEC_OUTPUT_MODE 1    // OUTPUT_*
+
+// What the kernel writes per pixel.
+#define OUTPUT_SHADED 0  // rgb = linear radiance, a = 1
+#define OUTPUT_COORDS 1  // rgb = texture coordinate (u, v, w; w = 0 for 2D), a = HIT_*
+#define OUTPUT_ALBEDO 2  // rgb = texture colour (the diffuse coefficient), a = HIT_*
+
+// Alpha of the debug outputs: what the primary ray hit.
+#define HIT_NONE 0
+#define HIT_PLANE 1
+#define HIT_SPHERE 2
+
+// Permutation table of improved Perlin noise: 256 entries repeated to 512,
+// four per uvec4 (std140 pads scalar arrays to 16 bytes, so pack them).
+#define NOISE_PERM_SIZE 512
+
+struct Frame {
+  vec4 eye;            // xyz: camera position
+  vec4 cameraRight;    // xyz: right axis * tan(fovY/2) * aspect
+  vec4 cameraUp;       // xyz: up axis * tan(fovY/2)
+  vec4 cameraForward;  // xyz: unit view direction
+  vec4 background;     // rgb: colour of rays that hit nothing
+  vec4 ambientLight;   // rgb
+  uint width;
+  uint height;
+  uint sphereCount;
+  uint planeCount;
+  uint lightCount;
+  uint pad0;
+  uint pad1;
+  uint pad2;
+};
+
+struct Sphere {
+  vec4 centerRadius;  // xyz: centre, w: radius
+  uint material;
+  uint pad0;
+  uint pad1;
+  uint pad2;
+};
+
+// Plane x.n = d with its texture frame, computed on the host in double:
+// tangent and binormal are unit, orthogonal to the normal and each other.
+struct Plane {
+  vec4 normalDistance;  // xyz: unit normal n, w: distance d
+  vec4 tangentScale;    // xyz: tangent t, w: tex_scale s
+  vec4 binormal;        // xyz: binormal b
+  uint material;
+  uint pad0;
+  uint pad1;
+  uint pad2;
+};
+
+struct Material {
+  vec4 ambient;    // rgb: k_a
+  vec4 diffuse;    // rgb: k_d (replaced by the texture colour when textured)
+  vec4 specular;   // rgb: k_s, w: shininess
+  vec4 color1;     // rgb: first texture colour
+  vec4 color2;     // rgb: second texture colour
+  vec4 params;     // x: scale (frequency), y: strength (turbulence amount), z: squares, w: unused
+  uint textureKind;  // TEX_*
+  uint octaves;
+  uint imageLayer;   // layer of BINDING_IMAGES for TEX_IMAGE
+  uint pad0;
+};
+
+struct Light {
+  vec4 position;  // xyz
+  vec4 color;     // rgb
+};
+
+struct NoiseTable {
+  uvec4 perm[NOISE_PERM_SIZE / 4];
+};
+
+#ifdef __cplusplus
+static_assert(sizeof(Frame) == 128, "Frame layout");
+static_assert(sizeof(Sphere) == 32, "Sphere layout");
+static_assert(sizeof(Plane) == 64, "Plane layout");
+static_assert(sizeof(Material) == 112, "Material layout");
+static_assert(sizeof(Light) == 32, "Light layout");
+static_assert(sizeof(NoiseTable) == NOISE_PERM_SIZE * 4, "NoiseTable layout");
+}  // namespace gpu
+#endif
+
+#endif  // RAYTEX_COMMON_H

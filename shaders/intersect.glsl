@@ -1,0 +1,58 @@
+// Ray/sphere and ray/plane intersection, closest hit and shadow queries.
+// Comparisons are written so that NaN counts as a miss: !(t > tMin && t < tMax).
+
+const float T_MAX = 3.0e38;
+
+struct Hit {
+  float t;
+  uint kind;   // HIT_*
+  uint index;  // into spheres[] or planes[]
+};
+
+// Smallest root t in (tMin, tMax) of |o + t d - c| = r for unit d, or -1.
+// Stable form (Ray Tracing Gems ch. 7): the discriminant from the perpendicular
+// distance, and the second root from c/q to avoid cancellation.
+float intersectSphere(vec3 o, vec3 d, vec4 centerRadius, float tMin, float tMax) {
+  vec3 f = o - centerRadius.xyz;
+  float r = centerRadius.w;
+  float b = -dot(f, d);
+  vec3 perp = f + b * d;
+  float disc = r * r - dot(perp, perp);
+  if (!(disc >= 0.0)) return -1.0;
+  float c = dot(f, f) - r * r;
+  float q = b + (b >= 0.0 ? sqrt(disc) : -sqrt(disc));
+  float t0 = c / q;
+  float t1 = q;
+  float near = min(t0, t1), far = max(t0, t1);
+  if (near > tMin && near < tMax) return near;
+  if (far > tMin && far < tMax) return far;  // origin inside the sphere
+  return -1.0;
+}
+
+// t of x.n = d along the ray, or -1 (parallel rays give inf or NaN: a miss).
+float intersectPlane(vec3 o, vec3 dir, vec4 normalDistance, float tMin, float tMax) {
+  float t = (normalDistance.w - dot(normalDistance.xyz, o)) / dot(normalDistance.xyz, dir);
+  return (t > tMin && t < tMax) ? t : -1.0;
+}
+
+Hit closestHit(vec3 o, vec3 d) {
+  Hit hit = Hit(T_MAX, HIT_NONE, 0u);
+  for (uint i = 0u; i < frame.sphereCount; ++i) {
+    float t = intersectSphere(o, d, spheres[i].centerRadius, 0.0, hit.t);
+    if (t > 0.0) hit = Hit(t, HIT_SPHERE, i);
+  }
+  for (uint i = 0u; i < frame.planeCount; ++i) {
+    float t = intersectPlane(o, d, planes[i].normalDistance, 0.0, hit.t);
+    if (t > 0.0) hit = Hit(t, HIT_PLANE, i);
+  }
+  return hit;
+}
+
+// True if anything lies on the segment from o along unit d before distance tMax.
+bool occluded(vec3 o, vec3 d, float tMax) {
+  for (uint i = 0u; i < frame.sphereCount; ++i)
+    if (intersectSphere(o, d, spheres[i].centerRadius, 0.0, tMax) > 0.0) return true;
+  for (uint i = 0u; i < frame.planeCount; ++i)
+    if (intersectPlane(o, d, planes[i].normalDistance, 0.0, tMax) > 0.0) return true;
+  return false;
+}

@@ -1,0 +1,59 @@
+// Surface reconstruction at a hit and Phong shading with hard shadows.
+
+struct Surface {
+  vec3 p;        // hit point (on the surface)
+  vec3 n;        // unit normal, facing the viewer
+  TexCoord tc;
+  uint material;
+};
+
+Surface surfaceAt(Hit hit, vec3 o, vec3 d) {
+  Surface s;
+  if (hit.kind == HIT_SPHERE) {
+    Sphere sp = spheres[hit.index];
+    // Re-project onto the sphere: o + t d carries the error of t.
+    vec3 outward = normalize(o + hit.t * d - sp.centerRadius.xyz);
+    s.p = sp.centerRadius.xyz + sp.centerRadius.w * outward;
+    s.tc = sphereTexCoord(outward);  // the mapping uses the outward normal, inside or out
+    s.n = outward;
+    s.material = sp.material;
+  } else {
+    Plane pl = planes[hit.index];
+    s.p = o + hit.t * d;
+    s.tc = planeTexCoord(pl, s.p);
+    s.n = pl.normalDistance.xyz;
+    s.material = pl.material;
+  }
+  if (dot(s.n, d) > 0.0) s.n = -s.n;  // seen from behind (plane underside, inside a sphere)
+  return s;
+}
+
+// Offset along the normal, scaled with the magnitude of p so it stays above float
+// rounding far from the origin and negligible near it (no shadow acne).
+vec3 offsetOrigin(vec3 p, vec3 n) {
+  float scale = max(max(abs(p.x), abs(p.y)), max(abs(p.z), 1.0));
+  return p + n * (scale * 1.0e-4);
+}
+
+// Phong: ambient + per light (diffuse k_d N.L + specular k_s (R.V)^shininess) when
+// the light is visible. A texture's colour replaces k_d and also tints the ambient
+// term, so the pattern stays visible in shadow.
+vec3 shade(Surface s, Material m, vec3 albedo, vec3 toEye) {
+  bool textured = m.textureKind != TEX_NONE;
+  vec3 color = frame.ambientLight.rgb * m.ambient.rgb * (textured ? albedo : vec3(1.0));
+  vec3 origin = offsetOrigin(s.p, s.n);
+  for (uint i = 0u; i < frame.lightCount; ++i) {
+    vec3 toLight = lights[i].position.xyz - s.p;
+    float dist = length(toLight);
+    if (!(dist > 0.0)) continue;
+    vec3 l = toLight / dist;
+    float nDotL = dot(s.n, l);
+    if (nDotL <= 0.0) continue;
+    if (occluded(origin, l, dist)) continue;
+    vec3 r = reflect(-l, s.n);
+    float rDotV = max(dot(r, toEye), 0.0);
+    vec3 specular = rDotV > 0.0 ? m.specular.rgb * pow(rDotV, m.specular.w) : vec3(0.0);
+    color += lights[i].color.rgb * (albedo * nDotL + specular);
+  }
+  return color;
+}

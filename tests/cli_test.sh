@@ -1,0 +1,66 @@
+#!/usr/bin/env bash
+# End-to-end checks of the raytex command line: exit codes (0 ok, 1 runtime, 2 bad
+# input), one-line errors, file:line:col for scenes, atomic output.
+# Usage: cli_test.sh RAYTEX SOURCE_DIR
+set -u
+raytex=$1
+src=$2
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+passed=0
+failed=0
+
+# expect NAME CODE PATTERN -- command...: exit code CODE and stderr+stdout matching PATTERN.
+expect() {
+  local name=$1 code=$2 pattern=$3
+  shift 4
+  local out rc
+  out=$("$@" 2>&1)
+  rc=$?
+  if [ "$rc" -eq "$code" ] && grep -qE -- "$pattern" <<<"$out"; then
+    passed=$((passed + 1))
+  else
+    failed=$((failed + 1))
+    echo "FAIL $name: exit $rc (want $code), output:"
+    echo "$out" | head -5
+  fi
+}
+check() {  # check NAME CONDITION...
+  local name=$1
+  shift
+  if "$@"; then passed=$((passed + 1)); else failed=$((failed + 1)); echo "FAIL $name"; fi
+}
+
+expect help 0 'usage: raytex render SCENE' -- "$raytex" --help
+expect no-args 2 '^raytex: missing command' -- "$raytex"
+expect unknown-command 2 "unknown command 'draw'" -- "$raytex" draw x
+expect no-scene 2 'render needs a scene file' -- "$raytex" render
+expect bad-width 2 '--width expects an integer from 1 to 16384' -- "$raytex" render s.cfg --width 0
+expect bad-option 2 "unknown option '--fast'" -- "$raytex" render s.cfg --fast
+expect missing-scene 2 "^$tmp/none.cfg: cannot open" -- "$raytex" render "$tmp/none.cfg"
+
+printf 'sphere {\n  center = (0, 0, 0);\n  radiuss = 2;\n}\n' >"$tmp/typo.cfg"
+expect scene-error 2 "^$tmp/typo.cfg:3:3: " -- "$raytex" render "$tmp/typo.cfg" -o "$tmp/typo.png"
+check scene-error-no-output test ! -e "$tmp/typo.png"
+
+expect no-driver 1 'mesa-vulkan-drivers' -- env VK_ICD_FILENAMES=/nonexistent.json "$raytex" render \
+  "$src/scenes/textures.cfg" -o "$tmp/none.png"
+check no-driver-no-output test ! -e "$tmp/none.png"
+
+expect unwritable 1 "cannot write '$tmp/no/dir/x.png'" -- "$raytex" render "$src/scenes/textures.cfg" \
+  -o "$tmp/no/dir/x.png" --width 32 --height 24
+
+# Success: a PNG of the requested size, and the stats line.
+expect render 0 '^device [0-9.]+ ms \| parse [0-9.]+ ms .* encode [0-9.]+ ms \| 64x48$' -- \
+  "$raytex" render "$src/scenes/textures.cfg" -o "$tmp/ok.png" --width 64 --height 48 --stats
+check png-signature test "$(head -c 8 "$tmp/ok.png" | od -An -tx1 | tr -d ' \n')" = 89504e470d0a1a0a
+check png-size test "$(od -An -tu1 -j16 -N8 "$tmp/ok.png" | tr -s ' ')" = " 0 0 0 64 0 0 0 48"
+check no-temp-files test "$(ls "$tmp" | grep -c tmp-)" -eq 0
+
+# An existing output is replaced whole, never left half-written, on success and failure.
+cp "$tmp/ok.png" "$tmp/keep.png"
+expect keep-on-error 2 'typo.cfg:3:3' -- "$raytex" render "$tmp/typo.cfg" -o "$tmp/keep.png"
+check keep-on-error-unchanged cmp -s "$tmp/ok.png" "$tmp/keep.png"
+
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]
