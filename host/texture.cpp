@@ -78,17 +78,12 @@ TextureDesc defaultTexture(TextureKind kind) {
       t.octaves = 4;
       break;
     case TextureKind::Turbulence:
-      t.color1 = glm::vec3(0.95f, 0.85f, 0.6f);
-      t.color2 = glm::vec3(0.3f, 0.1f, 0.05f);
-      t.scale = 6.0f;
-      t.strength = 1.25f;
-      t.octaves = 6;
-      break;
     case TextureKind::DTurbulence:
       t.color1 = glm::vec3(0.95f, 0.85f, 0.6f);
       t.color2 = glm::vec3(0.3f, 0.1f, 0.05f);
       t.scale = 6.0f;
-      t.strength = 2.5f;
+      // Derivative turbulence damps octaves on slopes, so it needs more gain for the same contrast.
+      t.strength = kind == TextureKind::DTurbulence ? 2.5f : 1.25f;
       t.octaves = 6;
       break;
   }

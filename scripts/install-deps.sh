@@ -1,0 +1,13 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages raytex builds and tests with (all from Debian; nothing
+# downloaded). Runs apt-get as root, or through sudo when not root.
+set -euo pipefail
+SUDO=""
+[ "$(id -u)" -eq 0 ] || SUDO="sudo"
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends \
+  build-essential cmake ninja-build pkg-config \
+  libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers glslang-tools \
+  libglm-dev libstb-dev libgtest-dev >/dev/null
+echo "raytex dependencies installed"
