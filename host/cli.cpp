@@ -22,7 +22,8 @@ bool parseUint(const std::string& flag, const std::string& text, uint32_t lo, ui
 }  // namespace
 
 const char* usageText() {
-  return "usage: raytex render SCENE [-o out.png] [--width W] [--height H] [--device N] [--stats]\n"
+  return "usage: raytex render SCENE [-o out.png] [--width W] [--height H] [--spp N] [--reference]\n"
+         "                    [--device N] [--stats] [--validate]\n"
          "       raytex devices\n"
          "       raytex --help | --version\n"
          "\n"
@@ -30,6 +31,9 @@ const char* usageText() {
          "  -o, --output FILE  output PNG (default out.png), written atomically\n"
          "  --width W          image width in pixels (default 640)\n"
          "  --height H         image height in pixels (default 480)\n"
+         "  --spp N            samples per pixel, a square number (1, 4, 9, 16, ...): an N x N\n"
+         "                     stratified grid, box filtered (default 1: the pixel centre)\n"
+         "  --reference        render on the CPU in float64 (slow; the accuracy reference), no Vulkan\n"
          "  --device N         Vulkan device index from `raytex devices` (default: the best GPU,\n"
          "                     else the CPU driver lavapipe)\n"
          "  --stats            print one line of phase times in milliseconds\n"
@@ -97,6 +101,16 @@ bool parseCli(const std::vector<std::string>& args, CliArgs* out, std::string* e
       uint32_t d = 0;
       if (!value(&v) || !parseUint(a, v, 0, 255, &d, error)) return false;
       r.device = int(d);
+    } else if (a == "--spp") {
+      if (!value(&v) || !parseUint(a, v, 1, 4096, &r.samplesPerPixel, error)) return false;
+      uint32_t side = 1;
+      while (side * side < r.samplesPerPixel) ++side;
+      if (side * side != r.samplesPerPixel) {
+        *error = "--spp must be a square number (1, 4, 9, 16, ...), got " + v;
+        return false;
+      }
+    } else if (a == "--reference") {
+      r.reference = true;
     } else if (a == "--stats") {
       r.stats = true;
     } else if (a == "--validate") {

@@ -3,9 +3,11 @@
 #include "gpu_scene.h"
 #include "image_io.h"
 #include "parser.h"
+#include "reference_render.h"
 #include "renderer.h"
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 
 namespace {
@@ -19,22 +21,63 @@ double msSince(Clock::time_point& start) {
   return ms;
 }
 
+uint32_t samplesPerSide(const RenderOptions& options) {
+  return uint32_t(std::lround(std::sqrt(double(options.samplesPerPixel))));
+}
+
+int writeImage(const RenderOptions& options, const ImageRGBA8& image, size_t nonFinite) {
+  if (nonFinite > 0)
+    fprintf(stderr, "warning: %zu non-finite colour values (written as black)\n", nonFinite);
+  try {
+    writePngAtomic(options.output, image);
+  } catch (const std::exception& e) {
+    fprintf(stderr, "raytex: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}
+
+// The float64 CPU reference: no Vulkan at all.
+int runReference(const RenderOptions& options, const Scene& scene, Clock::time_point t, double parseMs) {
+  ReferenceImage reference;
+  try {
+    reference = renderReference(scene, int(options.width), int(options.height), int(samplesPerSide(options)));
+  } catch (const SceneError& e) {
+    fprintf(stderr, "%s\n", e.what());
+    return 2;
+  }
+  double renderMs = msSince(t);
+  std::vector<float> rgba = referenceToRgba(reference);
+  size_t nonFinite = 0;
+  ImageRGBA8 image = encodeSrgb(rgba.data(), int(options.width), int(options.height), &nonFinite);
+  if (int rc = writeImage(options, image, nonFinite)) return rc;
+  double encodeMs = msSince(t);
+  if (options.stats)
+    printf("parse %.1f ms | reference %.1f ms | encode %.1f ms | %ux%u, %u spp\n", parseMs, renderMs,
+           encodeMs, options.width, options.height, options.samplesPerPixel);
+  return 0;
+}
+
 int runRender(const RenderOptions& options) {
   Clock::time_point t = Clock::now();
-  // Parse and load images before touching Vulkan: bad input fails fast, with no device.
+  // Parse (and, for Vulkan, load images) before touching Vulkan: bad input fails fast.
   Scene scene;
   GpuScene gpuScene;
   try {
     scene = parseSceneFile(options.scene);
-    gpuScene = buildGpuScene(scene, options.width, options.height);
+    if (!options.reference) {
+      gpuScene = buildGpuScene(scene, options.width, options.height);
+      gpuScene.frame.samplesPerSide = samplesPerSide(options);
+    }
   } catch (const SceneError& e) {
     fprintf(stderr, "%s\n", e.what());
     return 2;
   }
   double parseMs = msSince(t);
+  if (options.reference) return runReference(options, scene, t, parseMs);
 
   Renderer renderer;
-  double deviceMs = 0, uploadMs = 0, pipelineMs = 0, renderMs = 0, readbackMs = 0, encodeMs = 0;
+  double deviceMs = 0, uploadMs = 0, pipelineMs = 0, renderMs = 0, readbackMs = 0;
   ImageRGBA8 image;
   size_t nonFinite = 0;
   try {
@@ -60,21 +103,13 @@ int runRender(const RenderOptions& options) {
     destroyRenderer(renderer);
     return 1;
   }
-  if (nonFinite > 0)
-    fprintf(stderr, "warning: %zu non-finite colour values (written as black)\n", nonFinite);
-
-  try {
-    writePngAtomic(options.output, image);
-  } catch (const std::exception& e) {
-    fprintf(stderr, "raytex: %s\n", e.what());
-    return 1;
-  }
-  encodeMs = msSince(t);
+  if (int rc = writeImage(options, image, nonFinite)) return rc;
+  double encodeMs = msSince(t);
   if (options.stats)
     printf("device %.1f ms | parse %.1f ms | upload %.1f ms | pipeline %.1f ms | render %.1f ms | "
-           "readback %.1f ms | encode %.1f ms | %ux%u\n",
+           "readback %.1f ms | encode %.1f ms | %ux%u, %u spp\n",
            deviceMs, parseMs, uploadMs, pipelineMs, renderMs, readbackMs, encodeMs, options.width,
-           options.height);
+           options.height, options.samplesPerPixel);
   return 0;
 }
 

@@ -72,9 +72,9 @@ struct Frame {
   uint sphereCount;
   uint planeCount;
   uint lightCount;
+  uint samplesPerSide;  // N: N x N stratified samples per pixel, box filtered (shaded output)
   uint pad0;
   uint pad1;
-  uint pad2;
 };
 
 struct Sphere {

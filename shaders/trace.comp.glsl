@@ -26,34 +26,47 @@ layout(binding = BINDING_IMAGES) uniform sampler2DArray images;
 #include "intersect.glsl"
 #include "shading.glsl"
 
+// Unit direction of the primary ray through `film` (pixel units, row 0 at the top).
+vec3 primaryRay(vec2 film) {
+  vec2 ndc = vec2(film.x / float(frame.width) * 2.0 - 1.0, 1.0 - film.y / float(frame.height) * 2.0);
+  return normalize(frame.cameraForward.xyz + ndc.x * frame.cameraRight.xyz + ndc.y * frame.cameraUp.xyz);
+}
+
+// Linear radiance along one primary ray.
+vec3 radiance(vec3 origin, vec3 dir) {
+  Hit hit = closestHit(origin, dir);
+  if (hit.kind == HIT_NONE) return frame.background.rgb;
+  Surface s = surfaceAt(hit, origin, dir);
+  Material m = materials[s.material];
+  return shade(s, m, textureColor(m, s.tc), -dir);
+}
+
+// Debug outputs at the pixel centre: texture coordinates or texture colour, HIT_* in alpha.
+vec4 debugOutput(vec3 origin, vec3 dir) {
+  Hit hit = closestHit(origin, dir);
+  if (hit.kind == HIT_NONE) return vec4(0.0);
+  Surface s = surfaceAt(hit, origin, dir);
+  Material m = materials[s.material];
+  if (OUTPUT_MODE == OUTPUT_ALBEDO) return vec4(textureColor(m, s.tc), float(hit.kind));
+  bool solid = m.textureKind != TEX_IMAGE && m.textureKind != TEX_CHECKER && m.textureKind != TEX_NONE;
+  return vec4(solid ? s.tc.solid : vec3(s.tc.uv, 0.0), float(hit.kind));
+}
+
 void main() {
   uvec2 pixel = gl_GlobalInvocationID.xy;
   if (pixel.x >= frame.width || pixel.y >= frame.height) return;
-
-  // Through the pixel's centre; row 0 at the top.
-  vec2 ndc = vec2((float(pixel.x) + 0.5) / float(frame.width) * 2.0 - 1.0,
-                  1.0 - (float(pixel.y) + 0.5) / float(frame.height) * 2.0);
   vec3 origin = frame.eye.xyz;
-  vec3 dir = normalize(frame.cameraForward.xyz + ndc.x * frame.cameraRight.xyz +
-                       ndc.y * frame.cameraUp.xyz);
-
-  Hit hit = closestHit(origin, dir);
   vec4 result;
-  if (hit.kind == HIT_NONE) {
-    result = OUTPUT_MODE == OUTPUT_SHADED ? vec4(frame.background.rgb, 1.0) : vec4(0.0);
+  if (OUTPUT_MODE == OUTPUT_SHADED) {
+    // N x N stratified samples at the centres of the sub-pixel cells, box filtered.
+    uint n = max(frame.samplesPerSide, 1u);
+    vec3 sum = vec3(0.0);
+    for (uint sy = 0u; sy < n; ++sy)
+      for (uint sx = 0u; sx < n; ++sx)
+        sum += radiance(origin, primaryRay(vec2(pixel) + (vec2(sx, sy) + 0.5) / float(n)));
+    result = vec4(sum / float(n * n), 1.0);
   } else {
-    Surface s = surfaceAt(hit, origin, dir);
-    Material m = materials[s.material];
-    vec3 albedo = textureColor(m, s.tc);
-    if (OUTPUT_MODE == OUTPUT_COORDS) {
-      bool solid = m.textureKind != TEX_IMAGE && m.textureKind != TEX_CHECKER &&
-                   m.textureKind != TEX_NONE;
-      result = vec4(solid ? s.tc.solid : vec3(s.tc.uv, 0.0), float(hit.kind));
-    } else if (OUTPUT_MODE == OUTPUT_ALBEDO) {
-      result = vec4(albedo, float(hit.kind));
-    } else {
-      result = vec4(shade(s, m, albedo, -dir), 1.0);
-    }
+    result = debugOutput(origin, primaryRay(vec2(pixel) + 0.5));
   }
   imageStore(outputImage, ivec2(pixel), result);
 }

@@ -51,7 +51,7 @@ expect unwritable 1 "cannot write '$tmp/no/dir/x.png'" -- "$raytex" render "$src
   -o "$tmp/no/dir/x.png" --width 32 --height 24
 
 # Success: a PNG of the requested size, and the stats line.
-expect render 0 '^device [0-9.]+ ms \| parse [0-9.]+ ms .* encode [0-9.]+ ms \| 64x48$' -- \
+expect render 0 '^device [0-9.]+ ms \| parse [0-9.]+ ms .* encode [0-9.]+ ms \| 64x48, 1 spp$' -- \
   "$raytex" render "$src/scenes/textures.cfg" -o "$tmp/ok.png" --width 64 --height 48 --stats
 check png-signature test "$(head -c 8 "$tmp/ok.png" | od -An -tx1 | tr -d ' \n')" = 89504e470d0a1a0a
 check png-size test "$(od -An -tu1 -j16 -N8 "$tmp/ok.png" | tr -s ' ')" = " 0 0 0 64 0 0 0 48"

@@ -3,11 +3,12 @@
 // - per-pixel checks of the kernel's texture coordinates and texture colours
 //   against the CPU double-precision reference (host/reference.cpp, mapping.cpp,
 //   texture.cpp), independent of any golden.
-#include "common.h"
+#include "gpu_fixture.h"
 #include "gpu_scene.h"
 #include "image_io.h"
 #include "parser.h"
 #include "reference.h"
+#include "reference_render.h"
 #include "renderer.h"
 #include "texture.h"
 
@@ -63,41 +64,6 @@ std::string outputDir() {
   return dir;
 }
 
-class RenderTest : public ::testing::Test {
- protected:
-  static void SetUpTestSuite() {
-    renderer_ = new Renderer;
-    createRenderer(*renderer_, {-1, true});
-  }
-  static void TearDownTestSuite() {
-    destroyRenderer(*renderer_);
-    delete renderer_;
-    renderer_ = nullptr;
-  }
-  void SetUp() override {
-    ASSERT_TRUE(renderer_->device.validation)
-        << "VK_LAYER_KHRONOS_validation missing: apt-get install vulkan-validationlayers";
-    errorsBefore_ = renderer_->device.validationErrors;
-  }
-  void TearDown() override {
-    EXPECT_EQ(renderer_->device.validationErrors, errorsBefore_) << "Vulkan validation errors";
-  }
-
-  // Renders and returns linear RGBA floats (a copy: the readback buffer is reused).
-  std::vector<float> render(const Scene& scene, uint32_t width, uint32_t height, uint32_t mode) {
-    GpuScene gpuScene = buildGpuScene(scene, width, height);
-    uploadScene(*renderer_, gpuScene);
-    preparePipeline(*renderer_, gpuScene.textureKinds, mode);
-    renderFrame(*renderer_);
-    readbackFrame(*renderer_);
-    const float* pixels = framePixels(*renderer_);
-    return std::vector<float>(pixels, pixels + size_t(width) * height * 4);
-  }
-
-  static Renderer* renderer_;
-  int errorsBefore_ = 0;
-};
-Renderer* RenderTest::renderer_ = nullptr;
 
 // --- goldens ---------------------------------------------------------------
 
@@ -223,24 +189,6 @@ TEST_F(RenderTest, TextureCoordinatesMatchDoubleReference) {
   }
 }
 
-// Bilinear sample of an sRGB image in linear light at column 1 - u, row 1 - v (north-up,
-// not mirrored: docs/textures.md), u repeating, v clamped to the texel centres (sphere).
-glm::dvec3 sampleImageReference(const ImageRGBA8& image, glm::dvec2 uv) {
-  const int w = image.width, h = image.height;
-  double x = (1.0 - uv.x) * w - 0.5;
-  double y = std::clamp((1.0 - uv.y) * h, 0.5, h - 0.5) - 0.5;
-  int x0 = int(std::floor(x)), y0 = int(std::floor(y));
-  double fx = x - x0, fy = y - y0;
-  auto texel = [&](int xi, int yi) {
-    xi = ((xi % w) + w) % w;
-    yi = std::clamp(yi, 0, h - 1);
-    const uint8_t* p = &image.pixels[(size_t(yi) * w + xi) * 4];
-    return glm::dvec3(srgbToLinear(p[0] / 255.0), srgbToLinear(p[1] / 255.0), srgbToLinear(p[2] / 255.0));
-  };
-  return (texel(x0, y0) * (1 - fx) + texel(x0 + 1, y0) * fx) * (1 - fy) +
-         (texel(x0, y0 + 1) * (1 - fx) + texel(x0 + 1, y0 + 1) * fx) * fy;
-}
-
 class AlbedoTest : public RenderTest, public ::testing::WithParamInterface<const char*> {};
 
 // The kernel's texture colour (OUTPUT_ALBEDO) equals the CPU double evaluation of the
@@ -269,7 +217,7 @@ TEST_P(AlbedoTest, TextureColourMatchesDoubleReference) {
     glm::dvec3 expected;
     double tolerance = 2e-3;
     if (m.texture.kind == TextureKind::Image) {
-      expected = sampleImageReference(image, hit.tc.uv);
+      expected = sampleImageReference(image, hit.tc.uv, hit.kind == HIT_SPHERE);
       tolerance = 0.02;  // 8-bit texels, driver filtering precision
     } else {
       // Skip pixels within float rounding of a discontinuity (check edges, wood rings).

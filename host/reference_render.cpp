@@ -1,0 +1,143 @@
+#include "reference_render.h"
+
+#include "reference.h"
+#include "texture.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <thread>
+
+namespace {
+
+struct Context {
+  const Scene& scene;
+  const std::map<std::string, ImageRGBA8>& images;
+  Material fallback;
+};
+
+const Material& materialOf(const Context& c, const ReferenceHit& hit) {
+  int index = hit.kind == 1 ? c.scene.planes[size_t(hit.index)].material
+                            : c.scene.spheres[size_t(hit.index)].material;
+  return index < 0 ? c.fallback : c.scene.materials[size_t(index)];
+}
+
+glm::dvec3 albedoAt(const Context& c, const Material& m, const ReferenceHit& hit) {
+  switch (m.texture.kind) {
+    case TextureKind::None:
+      return glm::dvec3(m.diffuse);
+    case TextureKind::Image:
+      return sampleImageReference(c.images.at(m.texture.imagePath), hit.tc.uv, hit.kind == 2);
+    default:
+      return textureColorReference(m.texture, hit.tc);
+  }
+}
+
+// Phong with hard shadows (docs/scene-format.md, "Shading").
+glm::dvec3 shadeReference(const Context& c, glm::dvec3 o, glm::dvec3 d) {
+  const Scene& scene = c.scene;
+  ReferenceHit hit = referenceClosestHit(scene, o, d);
+  if (hit.kind == 0) return glm::dvec3(scene.background);
+  const Material& m = materialOf(c, hit);
+  glm::dvec3 n = glm::dot(hit.n, d) > 0.0 ? -hit.n : hit.n;
+  glm::dvec3 albedo = albedoAt(c, m, hit);
+  bool textured = m.texture.kind != TextureKind::None;
+  glm::dvec3 color = glm::dvec3(scene.ambientLight) * glm::dvec3(m.ambient) * (textured ? albedo : glm::dvec3(1.0));
+  // Double precision leaves ~1e-16 relative error, so a tiny offset clears self-hits.
+  double scale = std::max({1.0, std::abs(hit.p.x), std::abs(hit.p.y), std::abs(hit.p.z)});
+  glm::dvec3 origin = hit.p + n * (scale * 1e-9);
+  for (const Light& light : scene.lights) {
+    glm::dvec3 toLight = glm::dvec3(light.position) - hit.p;
+    double dist = glm::length(toLight);
+    if (!(dist > 0.0)) continue;
+    glm::dvec3 l = toLight / dist;
+    double nDotL = glm::dot(n, l);
+    if (nDotL <= 0.0) continue;
+    ReferenceHit blocker = referenceClosestHit(scene, origin, l);
+    if (blocker.kind != 0 && blocker.t < dist) continue;
+    glm::dvec3 r = 2.0 * nDotL * n - l;
+    double rDotV = std::max(glm::dot(r, -d), 0.0);
+    glm::dvec3 specular = rDotV > 0.0 ? glm::dvec3(m.specular) * std::pow(rDotV, double(m.shininess)) : glm::dvec3(0.0);
+    color += glm::dvec3(light.color) * (albedo * nDotL + specular);
+  }
+  return color;
+}
+
+}  // namespace
+
+std::map<std::string, ImageRGBA8> loadReferenceImages(const Scene& scene) {
+  std::map<std::string, ImageRGBA8> images;
+  auto load = [&](int index) {
+    if (index < 0) return;
+    const TextureDesc& t = scene.materials[size_t(index)].texture;
+    if (t.kind != TextureKind::Image || images.count(t.imagePath)) return;
+    std::string error;
+    if (!loadImage(t.imagePath, &images[t.imagePath], &error)) throw SceneError(t.loc, error);
+  };
+  for (const Sphere& s : scene.spheres) load(s.material);
+  for (const Plane& p : scene.planes) load(p.material);
+  return images;
+}
+
+glm::dvec3 sampleImageReference(const ImageRGBA8& image, glm::dvec2 uv, bool clampV) {
+  const int w = image.width, h = image.height;
+  double x = (1.0 - uv.x) * w - 0.5;
+  double y = (1.0 - uv.y) * h;
+  if (clampV) y = std::clamp(y, 0.5, h - 0.5);
+  y -= 0.5;
+  double x0 = std::floor(x), y0 = std::floor(y);
+  double fx = x - x0, fy = y - y0;
+  auto texel = [&](double xi, double yi) {
+    int ix = int(xi - w * std::floor(xi / w));  // repeat
+    int iy = clampV ? int(std::clamp(yi, 0.0, double(h - 1))) : int(yi - h * std::floor(yi / h));
+    const uint8_t* p = &image.pixels[(size_t(iy) * w + ix) * 4];
+    return glm::dvec3(srgbToLinear(p[0] / 255.0), srgbToLinear(p[1] / 255.0), srgbToLinear(p[2] / 255.0));
+  };
+  return (texel(x0, y0) * (1 - fx) + texel(x0 + 1, y0) * fx) * (1 - fy) +
+         (texel(x0, y0 + 1) * (1 - fx) + texel(x0 + 1, y0 + 1) * fx) * fy;
+}
+
+ReferenceImage renderReference(const Scene& scene, int width, int height, int samplesPerSide, int threads) {
+  std::map<std::string, ImageRGBA8> images = loadReferenceImages(scene);
+  Context context{scene, images, defaultMaterial()};
+  ReferenceImage out;
+  out.width = width;
+  out.height = height;
+  out.rgb.assign(size_t(width) * height * 3, 0.0);
+  const int n = std::max(samplesPerSide, 1);
+  const glm::dvec3 eye(scene.camera.eye);
+
+  std::atomic<int> nextRow{0};
+  auto work = [&] {
+    for (int y = nextRow++; y < height; y = nextRow++) {
+      for (int x = 0; x < width; ++x) {
+        glm::dvec3 sum(0.0);
+        for (int sy = 0; sy < n; ++sy)
+          for (int sx = 0; sx < n; ++sx) {
+            // Offsets of the sub-pixel cell centres from the pixel centre, in [-0.5, 0.5].
+            double dx = (sx + 0.5) / n - 0.5, dy = (sy + 0.5) / n - 0.5;
+            sum += shadeReference(context, eye, referenceRayDirection(scene.camera, width, height, x, y, dx, dy));
+          }
+        sum /= double(n * n);
+        double* px = &out.rgb[(size_t(y) * width + x) * 3];
+        for (int c = 0; c < 3; ++c) px[c] = sum[c];
+      }
+    }
+  };
+  int count = threads > 0 ? threads : int(std::max(1u, std::thread::hardware_concurrency()));
+  std::vector<std::thread> pool;
+  for (int i = 1; i < count; ++i) pool.emplace_back(work);
+  work();
+  for (std::thread& t : pool) t.join();
+  for (double v : out.rgb) out.nonFinite += !std::isfinite(v);
+  return out;
+}
+
+std::vector<float> referenceToRgba(const ReferenceImage& image) {
+  std::vector<float> rgba(size_t(image.width) * image.height * 4, 1.0f);
+  for (size_t i = 0; i < size_t(image.width) * image.height; ++i)
+    for (int c = 0; c < 3; ++c) rgba[i * 4 + c] = float(image.rgb[i * 3 + c]);
+  return rgba;
+}

@@ -1,0 +1,37 @@
+// The float64 reference renderer: the same scene model as the GPU kernel, written
+// independently (reference.cpp intersection, mapping.cpp, noise.cpp, texture.cpp and the
+// Phong shading here), with N x N stratified supersampling and a box pixel filter.
+// Slow by design: the ground truth for tests and accuracy charts.
+#pragma once
+
+#include "image_io.h"
+#include "scene.h"
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include <map>
+#include <string>
+#include <vector>
+
+struct ReferenceImage {
+  int width = 0;
+  int height = 0;
+  std::vector<double> rgb;  // linear, 3 per pixel, row 0 at the top
+  size_t nonFinite = 0;     // non-finite channel values (written as they are)
+};
+
+// Decoded image textures of the materials objects use, by resolved path. Throws SceneError
+// at the texture's `file` location when one cannot be loaded.
+std::map<std::string, ImageRGBA8> loadReferenceImages(const Scene& scene);
+
+// Bilinear sample in linear light at column 1 - u, row 1 - v (docs/textures.md), u
+// repeating; v repeating too, or clamped to the texel centres when clampV (spheres).
+glm::dvec3 sampleImageReference(const ImageRGBA8& image, glm::dvec2 uv, bool clampV);
+
+// Renders with samplesPerSide^2 samples per pixel on `threads` threads (0: all cores).
+ReferenceImage renderReference(const Scene& scene, int width, int height, int samplesPerSide,
+                               int threads = 0);
+
+// Linear RGBA floats (alpha 1) for encodeSrgb.
+std::vector<float> referenceToRgba(const ReferenceImage& image);

@@ -1,0 +1,56 @@
+// The fixture of the device tests: one Renderer per test suite with the Khronos
+// validation layer on; every test fails on a new validation error.
+#pragma once
+
+#include "common.h"
+#include "gpu_scene.h"
+#include "renderer.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+class RenderTest : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    renderer_ = new Renderer;
+    createRenderer(*renderer_, {-1, true});
+  }
+  static void TearDownTestSuite() {
+    destroyRenderer(*renderer_);
+    delete renderer_;
+    renderer_ = nullptr;
+  }
+  void SetUp() override {
+    ASSERT_TRUE(renderer_->device.validation)
+        << "VK_LAYER_KHRONOS_validation missing: apt-get install vulkan-validationlayers";
+    errorsBefore_ = renderer_->device.validationErrors;
+  }
+  void TearDown() override {
+    EXPECT_EQ(renderer_->device.validationErrors, errorsBefore_) << "Vulkan validation errors";
+  }
+
+  // Renders and returns linear RGBA floats (a copy: the readback buffer is reused).
+  std::vector<float> render(const Scene& scene, uint32_t width, uint32_t height, uint32_t mode,
+                            uint32_t samplesPerSide = 1) {
+    GpuScene gpuScene = buildGpuScene(scene, width, height);
+    gpuScene.frame.samplesPerSide = samplesPerSide;
+    uploadScene(*renderer_, gpuScene);
+    preparePipeline(*renderer_, gpuScene.textureKinds, mode);
+    renderFrame(*renderer_);
+    readbackFrame(*renderer_);
+    const float* pixels = framePixels(*renderer_);
+    return std::vector<float>(pixels, pixels + size_t(width) * height * 4);
+  }
+
+  static inline Renderer* renderer_ = nullptr;
+  int errorsBefore_ = 0;
+};
+
+// Non-finite values in a float image (checked before any quantisation).
+inline size_t countNonFinite(const std::vector<float>& pixels) {
+  size_t n = 0;
+  for (float v : pixels) n += !std::isfinite(v);
+  return n;
+}
