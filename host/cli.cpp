@@ -22,8 +22,8 @@ bool parseUint(const std::string& flag, const std::string& text, uint32_t lo, ui
 }  // namespace
 
 const char* usageText() {
-  return "usage: raytex render SCENE [-o out.png] [--width W] [--height H] [--spp N] [--reference]\n"
-         "                    [--device N] [--stats] [--validate]\n"
+  return "usage: raytex render SCENE [-o out.png] [--width W] [--height H] [--spp N]\n"
+         "                    [--filter point|box] [--reference] [--device N] [--stats] [--validate]\n"
          "       raytex devices\n"
          "       raytex --help | --version\n"
          "\n"
@@ -33,6 +33,8 @@ const char* usageText() {
          "  --height H         image height in pixels (default 480)\n"
          "  --spp N            samples per pixel, a square number (1, 4, 9, 16, ...): an N x N\n"
          "                     stratified grid, box filtered (default 1: the pixel centre)\n"
+         "  --filter MODE      texture filtering: point (default: sample at the hit) or box (average\n"
+         "                     checkers over each sample's footprint from ray differentials)\n"
          "  --reference        render on the CPU in float64 (slow; the accuracy reference), no Vulkan\n"
          "  --device N         Vulkan device index from `raytex devices` (default: the best GPU,\n"
          "                     else the CPU driver lavapipe)\n"
@@ -109,6 +111,13 @@ bool parseCli(const std::vector<std::string>& args, CliArgs* out, std::string* e
         *error = "--spp must be a square number (1, 4, 9, 16, ...), got " + v;
         return false;
       }
+    } else if (a == "--filter") {
+      if (!value(&v)) return false;
+      if (v != "point" && v != "box") {
+        *error = "--filter expects point or box, got '" + v + "'";
+        return false;
+      }
+      r.filter = v == "box";
     } else if (a == "--reference") {
       r.reference = true;
     } else if (a == "--stats") {

@@ -14,6 +14,7 @@ struct RenderOptions {
   uint32_t height = 480;
   int device = -1;        // --device N; -1: best available
   uint32_t samplesPerPixel = 1;  // --spp: a square N*N, stratified, box filtered
+  bool filter = false;     // --filter box: textures averaged over each sample's footprint
   bool reference = false;  // --reference: the float64 CPU renderer instead of Vulkan
   bool stats = false;     // --stats: one line of phase times
   bool validate = false;  // --validate, or RAYTEX_VALIDATION=1: Vulkan validation layers

@@ -85,7 +85,7 @@ int runRender(const RenderOptions& options) {
     deviceMs = msSince(t);
     uploadScene(renderer, gpuScene);
     uploadMs = msSince(t);
-    preparePipeline(renderer, gpuScene.textureKinds, OUTPUT_SHADED);
+    preparePipeline(renderer, gpuScene.textureKinds, OUTPUT_SHADED, options.filter ? FILTER_BOX : FILTER_POINT);
     pipelineMs = msSince(t);
     renderFrame(renderer);
     renderMs = msSince(t);

@@ -33,7 +33,7 @@ VkDescriptorSetLayout createTraceSetLayout(const Device& device) {
 }
 
 VkPipeline createTracePipeline(const Device& device, VkPipelineLayout layout,
-                               uint32_t textureKinds, uint32_t outputMode) {
+                               uint32_t textureKinds, uint32_t outputMode, uint32_t textureFilter) {
   VkShaderModuleCreateInfo moduleInfo{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
   moduleInfo.codeSize = sizeof(trace_comp_spv);
   moduleInfo.pCode = trace_comp_spv;
@@ -43,10 +43,12 @@ VkPipeline createTracePipeline(const Device& device, VkPipelineLayout layout,
   struct Constants {
     uint32_t textureKinds;
     uint32_t outputMode;
-  } constants{textureKinds, outputMode};
+    uint32_t textureFilter;
+  } constants{textureKinds, outputMode, textureFilter};
   const VkSpecializationMapEntry entries[] = {
       {SPEC_TEXTURE_KINDS, offsetof(Constants, textureKinds), sizeof(uint32_t)},
       {SPEC_OUTPUT_MODE, offsetof(Constants, outputMode), sizeof(uint32_t)},
+      {SPEC_TEXTURE_FILTER, offsetof(Constants, textureFilter), sizeof(uint32_t)},
   };
   VkSpecializationInfo specialization{};
   specialization.mapEntryCount = uint32_t(std::size(entries));

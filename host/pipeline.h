@@ -9,6 +9,6 @@
 VkDescriptorSetLayout createTraceSetLayout(const Device& device);
 
 // The kernel specialised to a scene: textureKinds is the TEX_* bit mask (absent kinds are
-// compiled out), outputMode one of OUTPUT_*.
+// compiled out), outputMode one of OUTPUT_*, textureFilter one of FILTER_*.
 VkPipeline createTracePipeline(const Device& device, VkPipelineLayout layout,
-                               uint32_t textureKinds, uint32_t outputMode);
+                               uint32_t textureKinds, uint32_t outputMode, uint32_t textureFilter);

@@ -45,6 +45,12 @@ using uvec4 = glm::uvec4;
 // Specialisation constant ids.
 #define SPEC_TEXTURE_KINDS 0  // uint bit mask of TEX_* kinds present
 #define SPEC_OUTPUT_MODE 1    // OUTPUT_*
+#define SPEC_TEXTURE_FILTER 2 // FILTER_*
+
+// Texture filtering (SPEC_TEXTURE_FILTER).
+#define FILTER_POINT 0  // point-sample textures at the hit (the course's method)
+#define FILTER_BOX 1    // average over the sample's footprint (ray differentials), where the
+                        // kind has a closed form: checker, solid_checker
 
 // What the kernel writes per pixel.
 #define OUTPUT_SHADED 0  // rgb = linear radiance, a = 1

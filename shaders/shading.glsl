@@ -12,7 +12,11 @@ Surface surfaceAt(Hit hit, vec3 o, vec3 d) {
   if (hit.kind == HIT_SPHERE) {
     Sphere sp = spheres[hit.index];
     // Re-project onto the sphere: o + t d carries the error of t.
-    vec3 outward = normalize(o + hit.t * d - sp.centerRadius.xyz);
+    // A ray through the centre of a sphere too small for float (radius 0, or r^2 below
+    // the smallest float) hits at the centre itself, where normalize(0) is NaN: there
+    // the sphere is a point seen head-on, so take the normal facing the ray.
+    vec3 toHit = o + hit.t * d - sp.centerRadius.xyz;
+    vec3 outward = dot(toHit, toHit) > 0.0 ? normalize(toHit) : -d;
     s.p = sp.centerRadius.xyz + sp.centerRadius.w * outward;
     s.tc = sphereTexCoord(outward);  // the mapping uses the outward normal, inside or out
     s.n = outward;

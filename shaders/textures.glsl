@@ -3,8 +3,10 @@
 // double-precision oracle is textureBlendReference / textureColorReference in
 // host/texture.cpp; keep the two in step. Formulas: docs/textures.md.
 //
-// Needs (declared by the including kernel, after common.h, noise.glsl, mapping.glsl):
+// Needs (declared by the including kernel, after common.h, noise.glsl, mapping.glsl,
+// footprint.glsl):
 //   layout(constant_id = SPEC_TEXTURE_KINDS) const uint TEXTURE_KINDS;  // bit (1u << TEX_*)
+//   layout(constant_id = SPEC_TEXTURE_FILTER) const uint TEXTURE_FILTER;  // FILTER_*
 //   layout(binding = BINDING_IMAGES) uniform sampler2DArray images;
 // Every kind's code sits behind its TEXTURE_KINDS bit, so a pipeline specialised
 // for a scene keeps only the kinds it uses (a checker-only scene has no noise code).
@@ -48,6 +50,37 @@ float solidCheckerBlend(Material m, TexCoord tc) {
   return textureParity(cell.x + cell.y + cell.z);
 }
 
+// --- Box-filtered checkers (FILTER_BOX): the exact average over the footprint's
+// axis-aligned box in texture space (Quilez, "checkerfiltering"; pbrt-v3 Checkerboard).
+
+// Integral from 0 to x of the parity of floor(x) (0 on [0,1), 1 on [1,2), period 2).
+float parityIntegral(float x) { return floor(0.5 * x) + max(0.0, 2.0 * fract(0.5 * x) - 1.0); }
+
+// Average of the parity of floor over [x - w/2, x + w/2]. x is reduced mod 2 first so the
+// difference of integrals does not cancel far from the origin.
+float filteredParity(float x, float w) {
+  x = mod(x, 2.0);
+  if (w < 1.0e-4) return step(1.0, x);  // narrower than float resolution here: point sample
+  return (parityIntegral(x + 0.5 * w) - parityIntegral(x - 0.5 * w)) / w;
+}
+
+// Parity of a sum of independent axes under a separable box: with e_i the average parity
+// of axis i, the average of their sum mod 2 is (1 - prod(1 - 2 e_i)) / 2.
+float filteredCheckerBlend(Material m, TexCoord tc, Footprint fp) {
+  float sq = max(floor(m.params.z + 0.5), 1.0);
+  // floor(uv sq) + sq tile, mod 2 without forming the large unwrapped coordinate.
+  vec2 x = tc.uv * sq + mod(sq * tc.tile, 2.0);
+  vec2 w = uvWidth(fp) * sq;
+  vec2 e = vec2(filteredParity(x.x, w.x), filteredParity(x.y, w.y));
+  return clamp(0.5 - 0.5 * (1.0 - 2.0 * e.x) * (1.0 - 2.0 * e.y), 0.0, 1.0);
+}
+
+float filteredSolidCheckerBlend(Material m, TexCoord tc, Footprint fp) {
+  vec3 x = tc.solid * m.params.z, w = solidWidth(fp) * m.params.z;
+  vec3 a = vec3(1.0) - 2.0 * vec3(filteredParity(x.x, w.x), filteredParity(x.y, w.y), filteredParity(x.z, w.z));
+  return clamp(0.5 - 0.5 * a.x * a.y * a.z, 0.0, 1.0);  // rounding may step just outside
+}
+
 float noiseBlend(Material m, TexCoord tc) {
   return clamp(0.5 + 0.5 * perlinNoise(tc.solid * m.params.x), 0.0, 1.0);
 }
@@ -80,17 +113,34 @@ float dturbulenceBlend(Material m, TexCoord tc) {
   return clamp(m.params.y * dturbulence(tc.solid * m.params.x, m.octaves), 0.0, 1.0);
 }
 
-vec3 textureColor(Material m, TexCoord tc) {
+// Kinds whose FILTER_BOX value is a closed-form average over a footprint box.
+bool hasClosedFormFilter(uint kind) { return kind == TEX_CHECKER || kind == TEX_SOLID_CHECKER; }
+
+// The box-filtered blend factor of a hasClosedFormFilter kind.
+float filteredBlend(Material m, TexCoord tc, Footprint fp) {
+  if (TEXTURE_KIND_PRESENT(TEX_CHECKER)) {
+    if (m.textureKind == TEX_CHECKER) return filteredCheckerBlend(m, tc, fp);
+  }
+  if (TEXTURE_KIND_PRESENT(TEX_SOLID_CHECKER)) {
+    if (m.textureKind == TEX_SOLID_CHECKER) return filteredSolidCheckerBlend(m, tc, fp);
+  }
+  return 0.0;
+}
+
+// fp: the footprint, read only when TEXTURE_FILTER != FILTER_POINT.
+vec3 textureColor(Material m, TexCoord tc, Footprint fp) {
   uint kind = m.textureKind;
   float t = -1.0;  // stays < 0 for untextured materials and unknown kinds
   if (TEXTURE_KIND_PRESENT(TEX_IMAGE)) {
     if (kind == TEX_IMAGE) return imageTextureColor(m, tc);
   }
   if (TEXTURE_KIND_PRESENT(TEX_CHECKER)) {
-    if (kind == TEX_CHECKER) t = checkerBlend(m, tc);
+    if (kind == TEX_CHECKER)
+      t = TEXTURE_FILTER == FILTER_BOX ? filteredCheckerBlend(m, tc, fp) : checkerBlend(m, tc);
   }
   if (TEXTURE_KIND_PRESENT(TEX_SOLID_CHECKER)) {
-    if (kind == TEX_SOLID_CHECKER) t = solidCheckerBlend(m, tc);
+    if (kind == TEX_SOLID_CHECKER)
+      t = TEXTURE_FILTER == FILTER_BOX ? filteredSolidCheckerBlend(m, tc, fp) : solidCheckerBlend(m, tc);
   }
   if (TEXTURE_KIND_PRESENT(TEX_NOISE)) {
     if (kind == TEX_NOISE) t = noiseBlend(m, tc);
@@ -107,7 +157,7 @@ vec3 textureColor(Material m, TexCoord tc) {
   if (TEXTURE_KIND_PRESENT(TEX_DTURBULENCE)) {
     if (kind == TEX_DTURBULENCE) t = dturbulenceBlend(m, tc);
   }
-  if (t < 0.0) return m.diffuse.rgb;  // TEX_NONE
+  if (t < -0.5) return m.diffuse.rgb;  // TEX_NONE (far from any rounded blend value)
   return mix(m.color1.rgb, m.color2.rgb, t);
 }
 

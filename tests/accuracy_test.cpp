@@ -3,6 +3,7 @@
 // reference without a bias floor.
 #include "gpu_fixture.h"
 #include "parser.h"
+#include "reference.h"
 #include "reference_render.h"
 
 #include <gtest/gtest.h>
@@ -32,6 +33,19 @@ double rmse(const std::vector<float>& gpu, const ReferenceImage& ref) {
       sum += d * d;
     }
   return std::sqrt(sum / double(3 * n));
+}
+
+// The checker floor toward the horizon (accuracy notes F4: camera 1 above the floor, 8 degrees
+// down, 60 degree fov, unit checks), lit by the ambient term alone so pixels are texture.
+Scene horizonScene() {
+  return parseSceneText(
+      "material c { ambient = (1, 1, 1); diffuse = (0, 0, 0); specular = (0, 0, 0);"
+      " texture = checker { color1 = (1, 1, 1); color2 = (0, 0, 0); squares = 1; }; }\n"
+      "camera { eye = (0, 1, 0); lookat = (0, 0.8594, -1); up = (0, 1, 0); fov = 60; }\n"  // tan(8 deg) = 0.1405
+      "ambient_light = (1, 1, 1);\n"
+      "background = (0.5, 0.5, 0.5);\n"
+      "plane { normal = (0, 1, 0); distance = 0; tex_scale = 1; c; }\n",
+      "horizon.cfg");
 }
 
 class AccuracyTest : public RenderTest, public ::testing::WithParamInterface<const char*> {};
@@ -74,18 +88,10 @@ INSTANTIATE_TEST_SUITE_P(Materials, AccuracyTest,
                          ::testing::Values("aSolidChecker", "aMarble", "anImage", "aDturbulence"),
                          [](const ::testing::TestParamInfo<const char*>& info) { return std::string(info.param); });
 
-// The checker floor toward the horizon (accuracy notes F4: camera 1 above the floor, 8 degrees
-// down, 60 degree fov, unit checks). Against a 16x16 reference, the error of N x N stratified
-// supersampling falls as N grows: no bias floor.
+// Against a 16x16 reference, the error of N x N stratified supersampling of the horizon
+// scene falls as N grows: no bias floor.
 TEST_F(RenderTest, SupersamplingConvergesToTheReference) {
-  Scene scene = parseSceneText(
-      "material c { ambient = (1, 1, 1); diffuse = (0, 0, 0); specular = (0, 0, 0);"
-      " texture = checker { color1 = (1, 1, 1); color2 = (0, 0, 0); squares = 1; }; }\n"
-      "camera { eye = (0, 1, 0); lookat = (0, 0.8594, -1); up = (0, 1, 0); fov = 60; }\n"  // tan(8 deg) = 0.1405
-      "ambient_light = (1, 1, 1);\n"
-      "background = (0.5, 0.5, 0.5);\n"
-      "plane { normal = (0, 1, 0); distance = 0; tex_scale = 1; c; }\n",
-      "horizon.cfg");
+  Scene scene = horizonScene();
   const int w = 96, h = 72;
   ReferenceImage ref = renderReference(scene, w, h, 16);
   double previous = 1e9;
@@ -103,6 +109,54 @@ TEST_F(RenderTest, SupersamplingConvergesToTheReference) {
   // Measured on lavapipe: RMSE 0.199, 0.094, 0.056, 0.035 at 1, 4, 16, 64 samples per pixel
   // (about spp^-0.4: edges under stratified sampling).
   EXPECT_LT(errors[3], errors[0] / 4.0);
+}
+
+// RMSE over the pixels flagged in `mask`.
+double rmse(const std::vector<float>& gpu, const ReferenceImage& ref, const std::vector<bool>& mask) {
+  double sum = 0.0;
+  size_t count = 0;
+  for (size_t i = 0; i < mask.size(); ++i) {
+    if (!mask[i]) continue;
+    ++count;
+    for (int c = 0; c < 3; ++c) {
+      double d = double(gpu[i * 4 + c]) - ref.rgb[i * 3 + c];
+      sum += d * d;
+    }
+  }
+  return count ? std::sqrt(sum / double(3 * count)) : 0.0;
+}
+
+// The horizon band (floor hit at distance >= 10 from the eye): box-filtered checkers at one
+// sample per pixel beat 4x4 point supersampling by 3x against a 32x32 reference.
+TEST_F(RenderTest, FilteredCheckerBeatsSupersamplingAtTheHorizon) {
+  Scene scene = horizonScene();
+  const int w = 96, h = 72;
+  ReferenceImage ref = renderReference(scene, w, h, 32);
+  std::vector<bool> band(size_t(w) * h, false);
+  size_t bandPixels = 0;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      ReferenceHit hit = referenceClosestHit(scene, glm::dvec3(scene.camera.eye),
+                                             referenceRayDirection(scene.camera, w, h, x, y));
+      bool inBand = hit.kind == HIT_PLANE && hit.t >= 10.0;
+      band[size_t(y) * w + x] = inBand;
+      bandPixels += inBand;
+    }
+  ASSERT_GT(bandPixels, size_t(w) * 3);
+
+  std::vector<float> point1 = render(scene, w, h, OUTPUT_SHADED, 1, FILTER_POINT);
+  std::vector<float> point16 = render(scene, w, h, OUTPUT_SHADED, 4, FILTER_POINT);
+  std::vector<float> box1 = render(scene, w, h, OUTPUT_SHADED, 1, FILTER_BOX);
+  std::vector<float> box16 = render(scene, w, h, OUTPUT_SHADED, 4, FILTER_BOX);
+  for (const auto* img : {&point1, &point16, &box1, &box16}) EXPECT_EQ(countNonFinite(*img), 0u);
+  double ePoint1 = rmse(point1, ref, band), ePoint16 = rmse(point16, ref, band);
+  double eBox1 = rmse(box1, ref, band), eBox16 = rmse(box16, ref, band);
+  RecordProperty("band_rmse_point1_point16_box1_box16", std::to_string(ePoint1) + " " + std::to_string(ePoint16) +
+                                                            " " + std::to_string(eBox1) + " " + std::to_string(eBox16));
+  // Measured on lavapipe at 96x72: point 0.502 (1 spp), 0.147 (16 spp); box 0.035 (1 spp),
+  // 0.020 (16 spp). The target from the issue: filtered 1 spp within 1/3 of 16-spp point.
+  EXPECT_LE(eBox1, ePoint16 / 3.0);
+  EXPECT_LT(eBox16, eBox1);  // the footprint shrinks with the sample spacing: still converging
 }
 
 }  // namespace

@@ -33,11 +33,11 @@ class RenderTest : public ::testing::Test {
 
   // Renders and returns linear RGBA floats (a copy: the readback buffer is reused).
   std::vector<float> render(const Scene& scene, uint32_t width, uint32_t height, uint32_t mode,
-                            uint32_t samplesPerSide = 1) {
+                            uint32_t samplesPerSide = 1, uint32_t filter = FILTER_POINT) {
     GpuScene gpuScene = buildGpuScene(scene, width, height);
     gpuScene.frame.samplesPerSide = samplesPerSide;
     uploadScene(*renderer_, gpuScene);
-    preparePipeline(*renderer_, gpuScene.textureKinds, mode);
+    preparePipeline(*renderer_, gpuScene.textureKinds, mode, filter);
     renderFrame(*renderer_);
     readbackFrame(*renderer_);
     const float* pixels = framePixels(*renderer_);

@@ -1,0 +1,56 @@
+// Benchmark (prints numbers, asserts nothing): warm frame time of the sampling and filtering
+// methods on one scene, median of RUNS frames after one warm-up frame per method.
+// Usage: raytex_bench_methods SCENE [WIDTH HEIGHT RUNS]
+#include "common.h"
+#include "gpu_scene.h"
+#include "parser.h"
+#include "renderer.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <vector>
+
+int main(int argc, char** argv) {
+  if (argc < 2) {
+    fprintf(stderr, "usage: %s SCENE [WIDTH HEIGHT RUNS]\n", argv[0]);
+    return 2;
+  }
+  const uint32_t width = argc > 3 ? uint32_t(atoi(argv[2])) : 1920;
+  const uint32_t height = argc > 3 ? uint32_t(atoi(argv[3])) : 1080;
+  const int runs = argc > 4 ? atoi(argv[4]) : 5;
+  struct Method {
+    const char* name;
+    uint32_t samplesPerSide;
+    uint32_t filter;
+  } methods[] = {{"point, 1 spp", 1, FILTER_POINT},  {"point, 4 spp", 2, FILTER_POINT},
+                 {"point, 16 spp", 4, FILTER_POINT}, {"box, 1 spp", 1, FILTER_BOX},
+                 {"box, 4 spp", 2, FILTER_BOX}};
+  try {
+    Scene scene = parseSceneFile(argv[1]);
+    Renderer r;
+    createRenderer(r, {});
+    printf("%s %ux%u, median of %d warm frames\n", argv[1], width, height, runs);
+    for (const Method& m : methods) {
+      GpuScene g = buildGpuScene(scene, width, height);
+      g.frame.samplesPerSide = m.samplesPerSide;
+      uploadScene(r, g);
+      preparePipeline(r, g.textureKinds, OUTPUT_SHADED, m.filter);
+      renderFrame(r);  // warm-up: lavapipe compiles at the first dispatch
+      std::vector<double> ms;
+      for (int i = 0; i < runs; ++i) {
+        auto t = std::chrono::steady_clock::now();
+        renderFrame(r);
+        ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t).count());
+      }
+      std::sort(ms.begin(), ms.end());
+      printf("  %-14s %8.1f ms\n", m.name, ms[ms.size() / 2]);
+    }
+    destroyRenderer(r);
+  } catch (const std::exception& e) {
+    fprintf(stderr, "%s\n", e.what());
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,11 @@
+// The pinhole camera: primary rays through film positions (pixel units, row 0 at the top).
+#ifndef RAYTEX_CAMERA_GLSL
+#define RAYTEX_CAMERA_GLSL
+
+// Unit direction of the primary ray through `film`.
+vec3 primaryRay(vec2 film) {
+  vec2 ndc = vec2(film.x / float(frame.width) * 2.0 - 1.0, 1.0 - film.y / float(frame.height) * 2.0);
+  return normalize(frame.cameraForward.xyz + ndc.x * frame.cameraRight.xyz + ndc.y * frame.cameraUp.xyz);
+}
+
+#endif  // RAYTEX_CAMERA_GLSL
