@@ -23,7 +23,10 @@ Surface surfaceAt(Hit hit, vec3 o, vec3 d) {
     s.material = sp.material;
   } else {
     Plane pl = planes[hit.index];
+    // Re-project onto the plane: removes the error of t along the normal.
+    vec3 n = pl.normalDistance.xyz;
     s.p = o + hit.t * d;
+    s.p -= n * (dot(n, s.p) - pl.normalDistance.w);
     s.tc = planeTexCoord(pl, s.p);
     s.n = pl.normalDistance.xyz;
     s.material = pl.material;
@@ -32,11 +35,24 @@ Surface surfaceAt(Hit hit, vec3 o, vec3 d) {
   return s;
 }
 
-// Offset along the normal, scaled with the magnitude of p so it stays above float
-// rounding far from the origin and negligible near it (no shadow acne).
+// The origin of a shadow ray: p moved off the surface along n by a fixed number of float
+// steps per component (Wachter and Binder, Ray Tracing Gems ch. 6), so the offset follows
+// the rounding error of p at any distance from the origin; a fixed offset is too large
+// near the origin and, far out, smaller than the rounding (or, scaled by |p|, larger than
+// the objects: at 1e5 it lifted shadow rays over a unit sphere). Components near zero,
+// where float steps are tiny, move by a small absolute amount instead.
 vec3 offsetOrigin(vec3 p, vec3 n) {
-  float scale = max(max(abs(p.x), abs(p.y)), max(abs(p.z), 1.0));
-  return p + n * (scale * 1.0e-4);
+  const float nearZero = 1.0 / 32.0;
+  const float absoluteStep = 1.0 / 65536.0;
+  const float floatSteps = 256.0;
+  ivec3 steps = ivec3(floatSteps * n);
+  ivec3 bits = floatBitsToInt(p);
+  vec3 stepped = intBitsToFloat(ivec3(p.x < 0.0 ? bits.x - steps.x : bits.x + steps.x,
+                                      p.y < 0.0 ? bits.y - steps.y : bits.y + steps.y,
+                                      p.z < 0.0 ? bits.z - steps.z : bits.z + steps.z));
+  return vec3(abs(p.x) < nearZero ? p.x + absoluteStep * n.x : stepped.x,
+              abs(p.y) < nearZero ? p.y + absoluteStep * n.y : stepped.y,
+              abs(p.z) < nearZero ? p.z + absoluteStep * n.z : stepped.z);
 }
 
 // Phong: ambient + per light (diffuse k_d N.L + specular k_s (R.V)^shininess) when
