@@ -34,9 +34,8 @@ int main(int argc, char** argv) {
     printf("%s %ux%u, median of %d warm frames\n", argv[1], width, height, runs);
     for (const Method& m : methods) {
       GpuScene g = buildGpuScene(scene, width, height);
-      g.frame.samplesPerSide = m.samplesPerSide;
       uploadScene(r, g);
-      preparePipeline(r, g.textureKinds, OUTPUT_SHADED, m.filter);
+      preparePipeline(r, {g.textureKinds, OUTPUT_SHADED, m.filter, m.samplesPerSide});
       renderFrame(r);  // warm-up: lavapipe compiles at the first dispatch
       std::vector<double> ms;
       for (int i = 0; i < runs; ++i) {

@@ -53,7 +53,7 @@ int main(int argc, char** argv) {
         createRenderer(r, {});
         uploadScene(r, gpuScene);
         Clock::time_point t = Clock::now();
-        preparePipeline(r, v.kinds, OUTPUT_SHADED);
+        preparePipeline(r, {v.kinds, OUTPUT_SHADED, FILTER_POINT, 1});
         create.push_back(msSince(t));
         t = Clock::now();
         renderFrame(r);  // lavapipe finishes compiling at the first dispatch

@@ -128,7 +128,6 @@ GpuScene buildGpuScene(const Scene& scene, uint32_t width, uint32_t height) {
   g.frame.sphereCount = uint32_t(g.spheres.size());
   g.frame.planeCount = uint32_t(g.planes.size());
   g.frame.lightCount = uint32_t(g.lights.size());
-  g.frame.samplesPerSide = 1;
 
   if (g.textureKinds & ((1u << TEX_NOISE) | (1u << TEX_MARBLE) | (1u << TEX_WOOD) |
                         (1u << TEX_TURBULENCE) | (1u << TEX_DTURBULENCE)))

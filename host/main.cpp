@@ -67,7 +67,6 @@ int runRender(const RenderOptions& options) {
     scene = parseSceneFile(options.scene);
     if (!options.reference) {
       gpuScene = buildGpuScene(scene, options.width, options.height);
-      gpuScene.frame.samplesPerSide = samplesPerSide(options);
     }
   } catch (const SceneError& e) {
     fprintf(stderr, "%s\n", e.what());
@@ -85,7 +84,8 @@ int runRender(const RenderOptions& options) {
     deviceMs = msSince(t);
     uploadScene(renderer, gpuScene);
     uploadMs = msSince(t);
-    preparePipeline(renderer, gpuScene.textureKinds, OUTPUT_SHADED, options.filter ? FILTER_BOX : FILTER_POINT);
+    preparePipeline(renderer, {gpuScene.textureKinds, OUTPUT_SHADED,
+                               uint32_t(options.filter ? FILTER_BOX : FILTER_POINT), samplesPerSide(options)});
     pipelineMs = msSince(t);
     renderFrame(renderer);
     renderMs = msSince(t);

@@ -1,7 +1,10 @@
 #include "pipeline.h"
 
 #include "common.h"
-#include "trace_comp_spv.h"  // generated at build time by glslangValidator --vn
+// Generated at build time by glslangValidator --vn (CMakeLists.txt, add_shader_variant).
+#include "trace_box_spv.h"
+#include "trace_debug_spv.h"
+#include "trace_point_spv.h"
 
 #include <cstddef>
 
@@ -32,29 +35,32 @@ VkDescriptorSetLayout createTraceSetLayout(const Device& device) {
   return layout;
 }
 
-VkPipeline createTracePipeline(const Device& device, VkPipelineLayout layout,
-                               uint32_t textureKinds, uint32_t outputMode, uint32_t textureFilter) {
+VkPipeline createTracePipeline(const Device& device, VkPipelineLayout layout, const PipelineKey& key) {
   VkShaderModuleCreateInfo moduleInfo{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
-  moduleInfo.codeSize = sizeof(trace_comp_spv);
-  moduleInfo.pCode = trace_comp_spv;
+  // The build variant: debug outputs, or the shaded image with point or box textures.
+  if (key.outputMode != OUTPUT_SHADED) {
+    moduleInfo.codeSize = sizeof(trace_debug_spv);
+    moduleInfo.pCode = trace_debug_spv;
+  } else if (key.textureFilter == FILTER_BOX) {
+    moduleInfo.codeSize = sizeof(trace_box_spv);
+    moduleInfo.pCode = trace_box_spv;
+  } else {
+    moduleInfo.codeSize = sizeof(trace_point_spv);
+    moduleInfo.pCode = trace_point_spv;
+  }
   VkShaderModule module = VK_NULL_HANDLE;
   VK_CHECK(vkCreateShaderModule(device.device, &moduleInfo, nullptr, &module));
 
-  struct Constants {
-    uint32_t textureKinds;
-    uint32_t outputMode;
-    uint32_t textureFilter;
-  } constants{textureKinds, outputMode, textureFilter};
   const VkSpecializationMapEntry entries[] = {
-      {SPEC_TEXTURE_KINDS, offsetof(Constants, textureKinds), sizeof(uint32_t)},
-      {SPEC_OUTPUT_MODE, offsetof(Constants, outputMode), sizeof(uint32_t)},
-      {SPEC_TEXTURE_FILTER, offsetof(Constants, textureFilter), sizeof(uint32_t)},
+      {SPEC_TEXTURE_KINDS, offsetof(PipelineKey, textureKinds), sizeof(uint32_t)},
+      {SPEC_OUTPUT_MODE, offsetof(PipelineKey, outputMode), sizeof(uint32_t)},
+      {SPEC_SAMPLES_PER_SIDE, offsetof(PipelineKey, samplesPerSide), sizeof(uint32_t)},
   };
   VkSpecializationInfo specialization{};
   specialization.mapEntryCount = uint32_t(std::size(entries));
   specialization.pMapEntries = entries;
-  specialization.dataSize = sizeof(constants);
-  specialization.pData = &constants;
+  specialization.dataSize = sizeof(PipelineKey);
+  specialization.pData = &key;
 
   VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
   info.stage.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;

@@ -8,7 +8,16 @@
 // Bindings of shaders/common.h (set 0).
 VkDescriptorSetLayout createTraceSetLayout(const Device& device);
 
-// The kernel specialised to a scene: textureKinds is the TEX_* bit mask (absent kinds are
-// compiled out), outputMode one of OUTPUT_*, textureFilter one of FILTER_*.
-VkPipeline createTracePipeline(const Device& device, VkPipelineLayout layout,
-                               uint32_t textureKinds, uint32_t outputMode, uint32_t textureFilter);
+// What a trace pipeline is specialised to (the SPEC_* constants of common.h).
+struct PipelineKey {
+  uint32_t textureKinds = 0;     // TEX_* bit mask: absent kinds are compiled out
+  uint32_t outputMode = 0;       // OUTPUT_*
+  uint32_t textureFilter = 0;    // FILTER_*: selects the kernel's build variant
+  uint32_t samplesPerSide = 1;   // N x N samples per pixel
+  bool operator==(const PipelineKey& o) const {
+    return textureKinds == o.textureKinds && outputMode == o.outputMode &&
+           textureFilter == o.textureFilter && samplesPerSide == o.samplesPerSide;
+  }
+};
+
+VkPipeline createTracePipeline(const Device& device, VkPipelineLayout layout, const PipelineKey& key);

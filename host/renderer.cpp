@@ -144,19 +144,15 @@ void uploadScene(Renderer& r, const GpuScene& s) {
   writeDescriptors(r);
 }
 
-void preparePipeline(Renderer& r, uint32_t textureKinds, uint32_t outputMode, uint32_t textureFilter) {
-  if (r.pipeline && r.pipelineKinds == textureKinds && r.pipelineMode == outputMode &&
-      r.pipelineFilter == textureFilter)
-    return;
+void preparePipeline(Renderer& r, const PipelineKey& key) {
+  if (r.pipeline && r.pipelineKey == key) return;
   if (r.pipeline) {
     VK_CHECK(vkDeviceWaitIdle(r.device.device));
     vkDestroyPipeline(r.device.device, r.pipeline, nullptr);
     r.pipeline = VK_NULL_HANDLE;
   }
-  r.pipeline = createTracePipeline(r.device, r.pipelineLayout, textureKinds, outputMode, textureFilter);
-  r.pipelineKinds = textureKinds;
-  r.pipelineMode = outputMode;
-  r.pipelineFilter = textureFilter;
+  r.pipeline = createTracePipeline(r.device, r.pipelineLayout, key);
+  r.pipelineKey = key;
 }
 
 void renderFrame(Renderer& r) {

@@ -4,6 +4,7 @@
 
 #include "device.h"
 #include "gpu_scene.h"
+#include "pipeline.h"
 #include "resources.h"
 
 #include <cstdint>
@@ -16,7 +17,7 @@ struct Renderer {
   VkDescriptorSet descriptorSet = VK_NULL_HANDLE;
   VkSampler sampler = VK_NULL_HANDLE;
   VkPipeline pipeline = VK_NULL_HANDLE;
-  uint32_t pipelineKinds = 0, pipelineMode = 0, pipelineFilter = 0;
+  PipelineKey pipelineKey;
 
   Buffer frame, spheres, planes, materials, lights, noise;
   Buffer readback;  // width * height * 4 floats
@@ -31,10 +32,8 @@ void destroyRenderer(Renderer& renderer);
 // Replaces the scene on the device and the output size (re-creating only what changed size).
 void uploadScene(Renderer& renderer, const GpuScene& scene);
 
-// Creates the pipeline specialised to (textureKinds, outputMode, textureFilter: FILTER_*)
-// unless it is the current one.
-void preparePipeline(Renderer& renderer, uint32_t textureKinds, uint32_t outputMode,
-                     uint32_t textureFilter = 0);
+// Creates the pipeline specialised to `key` unless it is the current one.
+void preparePipeline(Renderer& renderer, const PipelineKey& key);
 
 // Dispatches the kernel over the whole image; waits.
 void renderFrame(Renderer& renderer);

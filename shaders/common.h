@@ -45,9 +45,9 @@ using uvec4 = glm::uvec4;
 // Specialisation constant ids.
 #define SPEC_TEXTURE_KINDS 0  // uint bit mask of TEX_* kinds present
 #define SPEC_OUTPUT_MODE 1    // OUTPUT_*
-#define SPEC_TEXTURE_FILTER 2 // FILTER_*
+#define SPEC_SAMPLES_PER_SIDE 2  // N: N x N stratified samples per pixel (shaded output)
 
-// Texture filtering (SPEC_TEXTURE_FILTER).
+// Texture filtering: a build variant of the kernel (RAYTEX_FILTER_BOX), not a constant.
 #define FILTER_POINT 0  // point-sample textures at the hit (the course's method)
 #define FILTER_BOX 1    // average over the sample's footprint (ray differentials), where the
                         // kind has a closed form: checker, solid_checker
@@ -78,9 +78,9 @@ struct Frame {
   uint sphereCount;
   uint planeCount;
   uint lightCount;
-  uint samplesPerSide;  // N: N x N stratified samples per pixel, box filtered (shaded output)
   uint pad0;
   uint pad1;
+  uint pad2;
 };
 
 struct Sphere {

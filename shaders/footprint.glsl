@@ -56,8 +56,8 @@ void textureDerivatives(Hit hit, Surface s, vec3 dp, out vec2 duv, out vec3 ds) 
 // The footprint of the sample at film position `film` (pixel units) whose neighbours lie
 // `spacing` pixels to the right and below; also returns the surface steps dpdx, dpdy.
 Footprint footprintAt(Hit hit, Surface s, vec3 o, vec2 film, float spacing, out vec3 dpdx, out vec3 dpdy) {
-  dpdx = tangentPlaneOffset(o, s.p, s.n, primaryRay(film + vec2(spacing, 0.0)));
-  dpdy = tangentPlaneOffset(o, s.p, s.n, primaryRay(film + vec2(0.0, spacing)));
+  dpdx = tangentPlaneOffset(o, s.p, s.n, primaryRayUnnormalized(film + vec2(spacing, 0.0)));
+  dpdy = tangentPlaneOffset(o, s.p, s.n, primaryRayUnnormalized(film + vec2(0.0, spacing)));
   Footprint f;
   textureDerivatives(hit, s, dpdx, f.duvdx, f.dsdx);
   textureDerivatives(hit, s, dpdy, f.duvdy, f.dsdy);

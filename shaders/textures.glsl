@@ -3,10 +3,9 @@
 // double-precision oracle is textureBlendReference / textureColorReference in
 // host/texture.cpp; keep the two in step. Formulas: docs/textures.md.
 //
-// Needs (declared by the including kernel, after common.h, noise.glsl, mapping.glsl,
-// footprint.glsl):
+// Needs (declared by the including kernel, after common.h, noise.glsl, mapping.glsl, and
+// footprint.glsl when RAYTEX_FILTER_BOX is defined):
 //   layout(constant_id = SPEC_TEXTURE_KINDS) const uint TEXTURE_KINDS;  // bit (1u << TEX_*)
-//   layout(constant_id = SPEC_TEXTURE_FILTER) const uint TEXTURE_FILTER;  // FILTER_*
 //   layout(binding = BINDING_IMAGES) uniform sampler2DArray images;
 // Every kind's code sits behind its TEXTURE_KINDS bit, so a pipeline specialised
 // for a scene keeps only the kinds it uses (a checker-only scene has no noise code).
@@ -50,6 +49,7 @@ float solidCheckerBlend(Material m, TexCoord tc) {
   return textureParity(cell.x + cell.y + cell.z);
 }
 
+#ifdef RAYTEX_FILTER_BOX
 // --- Box-filtered checkers (FILTER_BOX): the exact average over the footprint's
 // axis-aligned box in texture space (Quilez, "checkerfiltering"; pbrt-v3 Checkerboard).
 
@@ -80,6 +80,8 @@ float filteredSolidCheckerBlend(Material m, TexCoord tc, Footprint fp) {
   vec3 a = vec3(1.0) - 2.0 * vec3(filteredParity(x.x, w.x), filteredParity(x.y, w.y), filteredParity(x.z, w.z));
   return clamp(0.5 - 0.5 * a.x * a.y * a.z, 0.0, 1.0);  // rounding may step just outside
 }
+
+#endif  // RAYTEX_FILTER_BOX
 
 float noiseBlend(Material m, TexCoord tc) {
   return clamp(0.5 + 0.5 * perlinNoise(tc.solid * m.params.x), 0.0, 1.0);
@@ -113,6 +115,7 @@ float dturbulenceBlend(Material m, TexCoord tc) {
   return clamp(m.params.y * dturbulence(tc.solid * m.params.x, m.octaves), 0.0, 1.0);
 }
 
+#ifdef RAYTEX_FILTER_BOX
 // Kinds whose FILTER_BOX value is a closed-form average over a footprint box.
 bool hasClosedFormFilter(uint kind) { return kind == TEX_CHECKER || kind == TEX_SOLID_CHECKER; }
 
@@ -126,21 +129,32 @@ float filteredBlend(Material m, TexCoord tc, Footprint fp) {
   }
   return 0.0;
 }
+#endif
 
-// fp: the footprint, read only when TEXTURE_FILTER != FILTER_POINT.
+// With RAYTEX_FILTER_BOX the closed-form kinds average over the footprint fp.
+#ifdef RAYTEX_FILTER_BOX
 vec3 textureColor(Material m, TexCoord tc, Footprint fp) {
+#else
+vec3 textureColor(Material m, TexCoord tc) {
+#endif
   uint kind = m.textureKind;
   float t = -1.0;  // stays < 0 for untextured materials and unknown kinds
   if (TEXTURE_KIND_PRESENT(TEX_IMAGE)) {
     if (kind == TEX_IMAGE) return imageTextureColor(m, tc);
   }
   if (TEXTURE_KIND_PRESENT(TEX_CHECKER)) {
-    if (kind == TEX_CHECKER)
-      t = TEXTURE_FILTER == FILTER_BOX ? filteredCheckerBlend(m, tc, fp) : checkerBlend(m, tc);
+#ifdef RAYTEX_FILTER_BOX
+    if (kind == TEX_CHECKER) t = filteredCheckerBlend(m, tc, fp);
+#else
+    if (kind == TEX_CHECKER) t = checkerBlend(m, tc);
+#endif
   }
   if (TEXTURE_KIND_PRESENT(TEX_SOLID_CHECKER)) {
-    if (kind == TEX_SOLID_CHECKER)
-      t = TEXTURE_FILTER == FILTER_BOX ? filteredSolidCheckerBlend(m, tc, fp) : solidCheckerBlend(m, tc);
+#ifdef RAYTEX_FILTER_BOX
+    if (kind == TEX_SOLID_CHECKER) t = filteredSolidCheckerBlend(m, tc, fp);
+#else
+    if (kind == TEX_SOLID_CHECKER) t = solidCheckerBlend(m, tc);
+#endif
   }
   if (TEXTURE_KIND_PRESENT(TEX_NOISE)) {
     if (kind == TEX_NOISE) t = noiseBlend(m, tc);

@@ -35,9 +35,8 @@ class RenderTest : public ::testing::Test {
   std::vector<float> render(const Scene& scene, uint32_t width, uint32_t height, uint32_t mode,
                             uint32_t samplesPerSide = 1, uint32_t filter = FILTER_POINT) {
     GpuScene gpuScene = buildGpuScene(scene, width, height);
-    gpuScene.frame.samplesPerSide = samplesPerSide;
     uploadScene(*renderer_, gpuScene);
-    preparePipeline(*renderer_, gpuScene.textureKinds, mode, filter);
+    preparePipeline(*renderer_, {gpuScene.textureKinds, mode, filter, samplesPerSide});
     renderFrame(*renderer_);
     readbackFrame(*renderer_);
     const float* pixels = framePixels(*renderer_);
