@@ -62,20 +62,64 @@ uint32_t usedTextureKinds(const Scene& scene) {
 }
 
 gpu::Frame cameraFrame(const Camera& camera, uint32_t width, uint32_t height) {
-  glm::vec3 forward = glm::normalize(camera.lookat - camera.eye);
-  glm::vec3 right = glm::normalize(glm::cross(forward, camera.up));
-  glm::vec3 up = glm::cross(right, forward);
-  float tanHalf = std::tan(glm::radians(camera.fovY) * 0.5f);
-  float aspect = float(width) / float(height);
+  glm::dvec3 forward = glm::normalize(camera.lookat - camera.eye);
+  glm::dvec3 right = glm::normalize(glm::cross(forward, camera.up));
+  glm::dvec3 up = glm::cross(right, forward);
+  double tanHalf = std::tan(glm::radians(camera.fovY) * 0.5);
+  double aspect = double(width) / double(height);
   gpu::Frame f{};
-  f.eye = v4(camera.eye);
-  f.cameraRight = v4(right * tanHalf * aspect);
-  f.cameraUp = v4(up * tanHalf);
-  f.cameraForward = v4(forward);
+  f.eye = glm::vec4(0.0f);  // every GPU position is relative to the camera
+  f.cameraRight = v4(glm::vec3(right * tanHalf * aspect));
+  f.cameraUp = v4(glm::vec3(up * tanHalf));
+  f.cameraForward = v4(glm::vec3(forward));
   f.width = width;
   f.height = height;
   return f;
 }
+
+namespace {
+
+// x - P floor(x / P): x reduced into [0, P).
+double reduceModulo(double x, double period) { return x - period * std::floor(x / period); }
+
+// The period of a solid texture in solid coordinates, or 0 if it has none.
+double solidPeriod(const TextureDesc& t) {
+  switch (t.kind) {
+    case TextureKind::SolidChecker:
+      return 2.0 / double(t.squares);  // parity of floor(solid * squares) summed over axes
+    case TextureKind::Noise:
+    case TextureKind::Marble:
+    case TextureKind::Turbulence:
+    case TextureKind::DTurbulence:
+      return 256.0 / double(t.scale);  // the noise lattice repeats every 256 (marble's sine every 2)
+    default:
+      return 0.0;  // wood's rings are not periodic
+  }
+}
+
+// The plane's texture frame and the camera's position folded into texture offsets, in double.
+gpu::Plane packPlane(const Plane& p, const TextureDesc& texture, glm::dvec3 eye, uint32_t material) {
+  // The frame is built once here by the same rule the CPU reference uses.
+  PlaneFrame pf = planeFrame(p.normal, p.distance);
+  const double s = p.texScale;
+  gpu::Plane gp{};
+  gp.normalDistance = glm::vec4(glm::vec3(pf.normal), float(pf.distance - glm::dot(pf.normal, eye)));
+  gp.tangentScale = glm::vec4(glm::vec3(pf.tangent), float(s));
+  gp.binormal = glm::vec4(glm::vec3(pf.binormal), 0.0f);
+  glm::dvec2 st(glm::dot(eye, pf.tangent) / s, glm::dot(eye, pf.binormal) / s);
+  glm::dvec2 cell = glm::floor(st);
+  gp.uvOffset = glm::vec4(float(st.x - cell.x), float(st.y - cell.y), float(reduceModulo(cell.x, 4096.0)),
+                          float(reduceModulo(cell.y, 4096.0)));
+  glm::dvec3 solid = eye / s;
+  double period = solidPeriod(texture);
+  if (period > 0.0)
+    solid = glm::dvec3(reduceModulo(solid.x, period), reduceModulo(solid.y, period), reduceModulo(solid.z, period));
+  gp.solidOffset = glm::vec4(glm::vec3(solid), 0.0f);
+  gp.material = material;
+  return gp;
+}
+
+}  // namespace
 
 GpuScene buildGpuScene(const Scene& scene, uint32_t width, uint32_t height) {
   GpuScene g;
@@ -108,23 +152,17 @@ GpuScene buildGpuScene(const Scene& scene, uint32_t width, uint32_t height) {
     g.textureKinds |= 1u << uint32_t(material.texture.kind);
   }
 
+  // Camera-relative positions, subtracted in double.
+  const glm::dvec3 eye = scene.camera.eye;
   for (const Sphere& s : scene.spheres) {
     gpu::Sphere gs{};
-    gs.centerRadius = v4(s.center, s.radius);
+    gs.centerRadius = glm::vec4(glm::vec3(s.center - eye), float(s.radius));
     gs.material = materialIndex.at(s.material);
     g.spheres.push_back(gs);
   }
-  for (const Plane& p : scene.planes) {
-    // The texture frame is built once here, in double, by the same rule the CPU reference uses.
-    PlaneFrame pf = planeFrame(glm::dvec3(p.normal), double(p.distance));
-    gpu::Plane gp{};
-    gp.normalDistance = glm::vec4(glm::vec3(pf.normal), float(pf.distance));
-    gp.tangentScale = glm::vec4(glm::vec3(pf.tangent), p.texScale);
-    gp.binormal = glm::vec4(glm::vec3(pf.binormal), 0.0f);
-    gp.material = materialIndex.at(p.material);
-    g.planes.push_back(gp);
-  }
-  for (const Light& l : scene.lights) g.lights.push_back({v4(l.position), v4(l.color)});
+  for (const Plane& p : scene.planes)
+    g.planes.push_back(packPlane(p, materialAt(scene, p.material, fallback).texture, eye, materialIndex.at(p.material)));
+  for (const Light& l : scene.lights) g.lights.push_back({v4(glm::vec3(l.position - eye)), v4(l.color)});
   g.frame.sphereCount = uint32_t(g.spheres.size());
   g.frame.planeCount = uint32_t(g.planes.size());
   g.frame.lightCount = uint32_t(g.lights.size());

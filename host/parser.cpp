@@ -164,7 +164,7 @@ class Parser {
     return take().number;
   }
 
-  glm::vec3 tuple(FileLoc* loc = nullptr) {
+  glm::dvec3 tuple(FileLoc* loc = nullptr) {
     Token open = expect(Tok::LParen, "a tuple '(x, y, z)'");
     if (loc) *loc = open.loc;
     std::vector<double> v;
@@ -177,12 +177,12 @@ class Parser {
     }
     take();
     if (v.size() != 3) fail(open.loc, "expected 3 numbers, got " + std::to_string(v.size()));
-    return glm::vec3(float(v[0]), float(v[1]), float(v[2]));
+    return glm::dvec3(v[0], v[1], v[2]);
   }
 
   glm::vec3 color() {
     FileLoc loc;
-    glm::vec3 c = tuple(&loc);
+    glm::vec3 c = glm::vec3(tuple(&loc));
     if (c.x < 0.0f || c.y < 0.0f || c.z < 0.0f) fail(loc, "colour components must be >= 0");
     return c;
   }
@@ -244,7 +244,7 @@ class Parser {
         s.center = tuple();
       } else if (key.text == "radius") {
         assign(key, seen, "sphere");
-        s.radius = float(positive("sphere radius"));
+        s.radius = positive("sphere radius");
       } else {
         materialStatement(key, &s.material, "sphere");
         return;
@@ -262,16 +262,16 @@ class Parser {
       if (key.text == "normal") {
         assign(key, seen, "plane");
         FileLoc loc;
-        glm::vec3 n = tuple(&loc);
+        glm::dvec3 n = tuple(&loc);
         double len = std::sqrt(double(n.x) * n.x + double(n.y) * n.y + double(n.z) * n.z);
         if (!(len > 0.0)) fail(loc, "plane normal must not be zero");
-        p.normal = glm::vec3(float(n.x / len), float(n.y / len), float(n.z / len));
+        p.normal = n / len;
       } else if (key.text == "distance") {
         assign(key, seen, "plane");
-        p.distance = float(number());
+        p.distance = number();
       } else if (key.text == "tex_scale") {
         assign(key, seen, "plane");
-        p.texScale = float(positive("tex_scale"));
+        p.texScale = positive("tex_scale");
       } else {
         materialStatement(key, &p.material, "plane");
         return;
@@ -386,7 +386,7 @@ class Parser {
         std::string text;
         double v = number(&loc, &text);
         if (!(v > 0.0 && v < 180.0)) fail(loc, "fov must be between 0 and 180 degrees (exclusive), got " + text);
-        c.fovY = float(v);
+        c.fovY = v;
       }
       semicolon("the value of '" + key.text + "'");
     });

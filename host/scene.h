@@ -59,33 +59,35 @@ struct Material {
   FileLoc loc;
 };
 
+// Positions and sizes are double: a scene far from the origin keeps them exact until the
+// host makes them camera-relative (gpu_scene.cpp). Colours are float.
 struct Sphere {
-  glm::vec3 center{0.0f};
-  float radius = 1.0f;
+  glm::dvec3 center{0.0};
+  double radius = 1.0;
   int material = -1;  // index into Scene::materials; -1: the default material
   FileLoc loc;
 };
 
 // x . normal = distance. normal is stored unit length.
 struct Plane {
-  glm::vec3 normal{0.0f, 1.0f, 0.0f};
-  float distance = 0.0f;
-  float texScale = 1.0f;  // side of one repeated texture square
+  glm::dvec3 normal{0.0, 1.0, 0.0};
+  double distance = 0.0;
+  double texScale = 1.0;  // side of one repeated texture square
   int material = -1;
   FileLoc loc;
 };
 
 struct Light {
-  glm::vec3 position{0.0f, 10.0f, 0.0f};
+  glm::dvec3 position{0.0, 10.0, 0.0};
   glm::vec3 color{1.0f};
 };
 
 // Pinhole camera; fov is the vertical field of view in degrees.
 struct Camera {
-  glm::vec3 eye{0.0f, 0.0f, 10.0f};
-  glm::vec3 lookat{0.0f};
-  glm::vec3 up{0.0f, 1.0f, 0.0f};
-  float fovY = 45.0f;
+  glm::dvec3 eye{0.0, 0.0, 10.0};
+  glm::dvec3 lookat{0.0};
+  glm::dvec3 up{0.0, 1.0, 0.0};
+  double fovY = 45.0;
 };
 
 struct Scene {

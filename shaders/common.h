@@ -66,8 +66,10 @@ using uvec4 = glm::uvec4;
 // four per uvec4 (std140 pads scalar arrays to 16 bytes, so pack them).
 #define NOISE_PERM_SIZE 512
 
+// Every position on the GPU is relative to the camera (computed on the host in double),
+// so hit points near the camera stay exact however far the scene is from the origin.
 struct Frame {
-  vec4 eye;            // xyz: camera position
+  vec4 eye;            // xyz: camera position: (0, 0, 0), positions being camera-relative
   vec4 cameraRight;    // xyz: right axis * tan(fovY/2) * aspect
   vec4 cameraUp;       // xyz: up axis * tan(fovY/2)
   vec4 cameraForward;  // xyz: unit view direction
@@ -84,7 +86,7 @@ struct Frame {
 };
 
 struct Sphere {
-  vec4 centerRadius;  // xyz: centre, w: radius
+  vec4 centerRadius;  // xyz: centre relative to the camera, w: radius
   uint material;
   uint pad0;
   uint pad1;
@@ -92,11 +94,16 @@ struct Sphere {
 };
 
 // Plane x.n = d with its texture frame, computed on the host in double:
-// tangent and binormal are unit, orthogonal to the normal and each other.
+// tangent and binormal are unit, orthogonal to the normal and each other. With x the
+// camera-relative position, the texture coordinates are u_p/s = x.t/s + uvOffset.x (the
+// notes' o' = d n drops out: n.t = 0) and solid = x/s + solidOffset, the offsets holding
+// the camera's position reduced modulo the texture's period (host, in double).
 struct Plane {
-  vec4 normalDistance;  // xyz: unit normal n, w: distance d
+  vec4 normalDistance;  // xyz: unit normal n, w: distance from the camera, d - n.eye
   vec4 tangentScale;    // xyz: tangent t, w: tex_scale s
   vec4 binormal;        // xyz: binormal b
+  vec4 uvOffset;        // xy: fractional part of (eye.t, eye.b)/s; zw: integer part mod 4096
+  vec4 solidOffset;     // xyz: eye/s modulo the solid texture's period
   uint material;
   uint pad0;
   uint pad1;
@@ -117,7 +124,7 @@ struct Material {
 };
 
 struct Light {
-  vec4 position;  // xyz
+  vec4 position;  // xyz: relative to the camera
   vec4 color;     // rgb
 };
 
@@ -128,7 +135,7 @@ struct NoiseTable {
 #ifdef __cplusplus
 static_assert(sizeof(Frame) == 128, "Frame layout");
 static_assert(sizeof(Sphere) == 32, "Sphere layout");
-static_assert(sizeof(Plane) == 64, "Plane layout");
+static_assert(sizeof(Plane) == 96, "Plane layout");
 static_assert(sizeof(Material) == 112, "Material layout");
 static_assert(sizeof(Light) == 32, "Light layout");
 static_assert(sizeof(NoiseTable) == NOISE_PERM_SIZE * 4, "NoiseTable layout");

@@ -7,7 +7,7 @@
 
 struct TexCoord {
   vec2 uv;      // 2D coordinate in [0,1]: u across, v up the image
-  vec2 tile;    // plane: index of the repeated tile, floor(u_p/s), floor(v_p/s); sphere: 0
+  vec2 tile;    // plane: index of the repeated tile, floor(u_p/s), floor(v_p/s), mod 4096; sphere: 0
   vec3 solid;   // solid-texture coordinate: plane p / s, sphere (n + 1) / 2
   bool clampV;  // image lookups must not wrap in v (the sphere's poles)
 };
@@ -17,18 +17,19 @@ struct TexCoord {
 //   o' = d n (6);  u_p = (p - o').t, v_p = (p - o').b (1);
 //   uv = u_p/s - floor(u_p/s), v_p/s - floor(v_p/s) (2)  -- floor, never int();
 //   tile = the floors (tile + uv is the unwrapped coordinate); solid = p / s.
+// p is relative to the camera, like every GPU position: u_p = (p_abs - o').t = (p + eye).t
+// (o' = d n is orthogonal to t), and the host folds eye.t/s into pl.uvOffset (its fraction
+// in xy, its integer part mod 4096 in zw: the checkers need only the tile's parity).
 TexCoord planeTexCoord(Plane pl, vec3 p) {
-  vec3 n = pl.normalDistance.xyz;
-  float d = pl.normalDistance.w;
   vec3 t = pl.tangentScale.xyz;
   float s = pl.tangentScale.w;
   vec3 b = pl.binormal.xyz;
-  vec3 r = p - d * n;
-  vec2 st = vec2(dot(r, t), dot(r, b)) / s;
+  vec2 st = vec2(dot(p, t), dot(p, b)) / s + pl.uvOffset.xy;
   TexCoord tc;
-  tc.tile = floor(st);
-  tc.uv = st - tc.tile;
-  tc.solid = p / s;
+  vec2 cell = floor(st);
+  tc.tile = cell + pl.uvOffset.zw;
+  tc.uv = st - cell;
+  tc.solid = p / s + pl.solidOffset.xyz;
   tc.clampV = false;
   return tc;
 }

@@ -30,7 +30,18 @@ TEST(GpuScene, CourseSceneUploadsOnlyTheMaterialsItUses) {
   // The plane's frame for n = (0,1,0): t = +x, b = +z, s = tex_scale.
   EXPECT_EQ(g.planes[0].tangentScale, glm::vec4(1, 0, 0, 5));
   EXPECT_EQ(g.planes[0].binormal, glm::vec4(0, 0, 1, 0));
-  EXPECT_EQ(g.planes[0].normalDistance, glm::vec4(0, 1, 0, -2));
+  // Camera-relative (eye (0, 3, 12)): the plane y = -2 lies 5 below the eye, the sphere at
+  // the origin at (0, -3, -12); the camera sits at u_p/s = 0/5, v_p/s = 12/5 = 2.4: tile 2,
+  // fraction 0.4; the 2D checker has no solid period, so the solid offset is eye/5.
+  EXPECT_EQ(g.planes[0].normalDistance, glm::vec4(0, 1, 0, -5));
+  EXPECT_EQ(g.spheres[0].centerRadius, glm::vec4(0, -3, -12, 2));
+  EXPECT_EQ(g.frame.eye, glm::vec4(0.0f));
+  EXPECT_NEAR(g.planes[0].uvOffset.x, 0.0f, 1e-6f);
+  EXPECT_NEAR(g.planes[0].uvOffset.y, 0.4f, 1e-6f);
+  EXPECT_EQ(g.planes[0].uvOffset.z, 0.0f);
+  EXPECT_EQ(g.planes[0].uvOffset.w, 2.0f);
+  EXPECT_NEAR(g.planes[0].solidOffset.y, 0.6f, 1e-6f);
+  EXPECT_NEAR(g.planes[0].solidOffset.z, 2.4f, 1e-6f);
   // No noise kind in use: the permutation table is left empty.
   EXPECT_EQ(g.noise.perm[1], glm::uvec4(0));
 }
@@ -43,6 +54,31 @@ TEST(GpuScene, NoiseTableIsFilledWhenANoiseKindIsUsed) {
   uint32_t sum = 0;
   for (int i = 0; i < 256; ++i) sum += g.noise.perm[i >> 2][i & 3];
   EXPECT_EQ(sum, 255u * 256u / 2u);  // a permutation of 0..255
+}
+
+// Far from the origin the offsets carry the camera's position modulo the texture period,
+// computed in double: the tile index keeps its parity (mod 4096), solid coordinates their
+// phase (solid checker: period 2/squares; noise kinds: 256/scale).
+TEST(GpuScene, FarCameraFoldsIntoPeriodicTextureOffsets) {
+  Scene scene = parseSceneText(
+      "material c { texture = solid_checker { squares = 4; }; }\n"
+      "camera { eye = (1000000.3, 3, -2000001.7); lookat = (1000000.3, 0, -2000011.7); }\n"
+      "plane { normal = (0, 1, 0); distance = 0; tex_scale = 2; c; }\n",
+      "far.cfg");
+  GpuScene g = buildGpuScene(scene, 8, 8);
+  const gpu::Plane& p = g.planes[0];
+  EXPECT_FLOAT_EQ(p.normalDistance.w, -3.0f);
+  // u_p/s = 1000000.3 / 2 = 500000.15: tile 500000 mod 4096 = 288, fraction 0.15.
+  EXPECT_NEAR(p.uvOffset.x, 0.15f, 1e-6f);
+  EXPECT_EQ(p.uvOffset.z, 288.0f);
+  // v_p/s = -2000001.7 / 2 = -1000000.85: tile -1000001; 1000001 = 4096 * 244 + 577, so
+  // -1000001 mod 4096 = 4096 - 577 = 3519 (odd, like -1000001); fraction 0.15.
+  EXPECT_NEAR(p.uvOffset.y, 0.15f, 1e-6f);
+  EXPECT_EQ(p.uvOffset.w, 3519.0f);
+  // Solid: eye/2 modulo 2/4 = 0.5: 500000.15 -> 0.15, 1.5 -> 0.0, -1000000.85 -> 0.15.
+  EXPECT_NEAR(p.solidOffset.x, 0.15f, 1e-6f);
+  EXPECT_NEAR(p.solidOffset.y, 0.0f, 1e-6f);
+  EXPECT_NEAR(p.solidOffset.z, 0.15f, 1e-6f);
 }
 
 TEST(GpuScene, ObjectsWithoutMaterialGetTheDefault) {
