@@ -3,6 +3,7 @@
 #include "common.h"
 #include "pipeline.h"
 
+#include <chrono>
 #include <vector>
 
 namespace {
@@ -97,6 +98,18 @@ void createRenderer(Renderer& r, const DeviceOptions& options) {
   samplerInfo.addressModeW = VK_SAMPLER_ADDRESS_MODE_REPEAT;
   samplerInfo.maxLod = 0.0f;
   VK_CHECK(vkCreateSampler(r.device.device, &samplerInfo, nullptr, &r.sampler));
+
+  // GPU frame times, where the queue supports timestamps.
+  uint32_t familyCount = 0;
+  vkGetPhysicalDeviceQueueFamilyProperties(r.device.physical, &familyCount, nullptr);
+  std::vector<VkQueueFamilyProperties> families(familyCount);
+  vkGetPhysicalDeviceQueueFamilyProperties(r.device.physical, &familyCount, families.data());
+  if (families[r.device.queueFamily].timestampValidBits > 0 && r.device.properties.limits.timestampPeriod > 0.0f) {
+    VkQueryPoolCreateInfo queryInfo{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
+    queryInfo.queryType = VK_QUERY_TYPE_TIMESTAMP;
+    queryInfo.queryCount = 2;
+    VK_CHECK(vkCreateQueryPool(r.device.device, &queryInfo, nullptr, &r.timestamps));
+  }
 }
 
 void destroyRenderer(Renderer& r) {
@@ -109,6 +122,7 @@ void destroyRenderer(Renderer& r) {
     destroyImage(r.device, r.output);
     destroyImage(r.device, r.images);
     if (r.sampler) vkDestroySampler(d, r.sampler, nullptr);
+    if (r.timestamps) vkDestroyQueryPool(d, r.timestamps, nullptr);
     if (r.descriptorPool) vkDestroyDescriptorPool(d, r.descriptorPool, nullptr);
     if (r.pipelineLayout) vkDestroyPipelineLayout(d, r.pipelineLayout, nullptr);
     if (r.setLayout) vkDestroyDescriptorSetLayout(d, r.setLayout, nullptr);
@@ -156,13 +170,24 @@ void preparePipeline(Renderer& r, const PipelineKey& key) {
 }
 
 void renderFrame(Renderer& r) {
+  auto start = std::chrono::steady_clock::now();
   VkCommandBuffer cmd = beginCommands(r.device);
+  if (r.timestamps) {
+    vkCmdResetQueryPool(cmd, r.timestamps, 0, 2);
+    vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, r.timestamps, 0);
+  }
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, r.pipeline);
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, r.pipelineLayout, 0, 1,
                           &r.descriptorSet, 0, nullptr);
   vkCmdDispatch(cmd, (r.width + WORKGROUP_X - 1) / WORKGROUP_X,
                 (r.height + WORKGROUP_Y - 1) / WORKGROUP_Y, 1);
+  if (r.timestamps) vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, r.timestamps, 1);
   submitAndWait(r.device, cmd);
+  r.lastFrameMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  uint64_t ticks[2] = {0, 0};
+  if (r.timestamps && vkGetQueryPoolResults(r.device.device, r.timestamps, 0, 2, sizeof(ticks), ticks,
+                                            sizeof(uint64_t), VK_QUERY_RESULT_64_BIT) == VK_SUCCESS)
+    r.lastFrameMs = double(ticks[1] - ticks[0]) * r.device.properties.limits.timestampPeriod * 1e-6;
 }
 
 void readbackFrame(Renderer& r) {

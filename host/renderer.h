@@ -24,6 +24,8 @@ struct Renderer {
   Image output;     // rgba32f storage image
   Image images;     // sampler2DArray of image textures (1x1 placeholder when none)
   uint32_t width = 0, height = 0;
+  VkQueryPool timestamps = VK_NULL_HANDLE;  // two per frame, around the dispatch
+  double lastFrameMs = 0.0;  // GPU time of the last renderFrame (timestamps), else wall time
 };
 
 void createRenderer(Renderer& renderer, const DeviceOptions& options);
@@ -35,7 +37,7 @@ void uploadScene(Renderer& renderer, const GpuScene& scene);
 // Creates the pipeline specialised to `key` unless it is the current one.
 void preparePipeline(Renderer& renderer, const PipelineKey& key);
 
-// Dispatches the kernel over the whole image; waits.
+// Dispatches the kernel over the whole image; waits. Sets lastFrameMs.
 void renderFrame(Renderer& renderer);
 
 // Copies the rendered image into the host-visible readback buffer; waits.
