@@ -29,8 +29,8 @@ const char* usageText() {
          "\n"
          "render   Ray-trace SCENE (a .cfg file) on a Vulkan device and write a PNG.\n"
          "  -o, --output FILE  output PNG (default out.png), written atomically\n"
-         "  --width W          image width in pixels (default 640)\n"
-         "  --height H         image height in pixels (default 480)\n"
+         "  --width W          image width in pixels (default: the scene's render block, else 640)\n"
+         "  --height H         image height in pixels (default: the scene's render block, else 480)\n"
          "  --spp N            samples per pixel, a square number (1, 4, 9, 16, ...): an N x N\n"
          "                     stratified grid, box filtered (default 1: the pixel centre)\n"
          "  --filter MODE      texture filtering: point (default: sample at the hit) or box (average\n"
@@ -96,18 +96,24 @@ bool parseCli(const std::vector<std::string>& args, CliArgs* out, std::string* e
         return false;
       }
     } else if (a == "--width") {
-      if (!value(&v) || !parseUint(a, v, 1, kMaxImageSide, &r.width, error)) return false;
+      uint32_t n = 0;
+      if (!value(&v) || !parseUint(a, v, 1, kMaxImageSide, &n, error)) return false;
+      r.width = n;
     } else if (a == "--height") {
-      if (!value(&v) || !parseUint(a, v, 1, kMaxImageSide, &r.height, error)) return false;
+      uint32_t n = 0;
+      if (!value(&v) || !parseUint(a, v, 1, kMaxImageSide, &n, error)) return false;
+      r.height = n;
     } else if (a == "--device") {
       uint32_t d = 0;
       if (!value(&v) || !parseUint(a, v, 0, 255, &d, error)) return false;
       r.device = int(d);
     } else if (a == "--spp") {
-      if (!value(&v) || !parseUint(a, v, 1, 4096, &r.samplesPerPixel, error)) return false;
+      uint32_t n = 0;
+      if (!value(&v) || !parseUint(a, v, 1, 4096, &n, error)) return false;
+      r.samplesPerPixel = n;
       uint32_t side = 1;
-      while (side * side < r.samplesPerPixel) ++side;
-      if (side * side != r.samplesPerPixel) {
+      while (side * side < n) ++side;
+      if (side * side != n) {
         *error = "--spp must be a square number (1, 4, 9, 16, ...), got " + v;
         return false;
       }
@@ -136,11 +142,6 @@ bool parseCli(const std::vector<std::string>& args, CliArgs* out, std::string* e
   }
   if (r.scene.empty()) {
     *error = "render needs a scene file (e.g. raytex render scenes/textures.cfg -o out.png)";
-    return false;
-  }
-  if (uint64_t(r.width) * r.height > kMaxPixels) {
-    *error = std::to_string(r.width) + "x" + std::to_string(r.height) + " exceeds the limit of " +
-             std::to_string(kMaxPixels) + " pixels (8192x8192)";
     return false;
   }
   const char* env = getenv("RAYTEX_VALIDATION");

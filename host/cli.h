@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -10,11 +11,10 @@ enum class CliCommand { Help, Version, Render, Devices };
 struct RenderOptions {
   std::string scene;
   std::string output = "out.png";
-  uint32_t width = 640;
-  uint32_t height = 480;
+  std::optional<uint32_t> width, height;  // flags; else the scene's render block; else 640x480
   int device = -1;        // --device N; -1: best available
-  uint32_t samplesPerPixel = 1;  // --spp: a square N*N, stratified, box filtered
-  bool filter = false;     // --filter box: textures averaged over each sample's footprint
+  std::optional<uint32_t> samplesPerPixel;  // --spp: a square N*N, stratified, box filtered
+  std::optional<bool> filter;  // --filter box: textures averaged over each sample's footprint
   bool reference = false;  // --reference: the float64 CPU renderer instead of Vulkan
   bool stats = false;     // --stats: one line of phase times
   bool validate = false;  // --validate, or RAYTEX_VALIDATION=1: Vulkan validation layers

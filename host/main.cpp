@@ -21,8 +21,26 @@ double msSince(Clock::time_point& start) {
   return ms;
 }
 
-uint32_t samplesPerSide(const RenderOptions& options) {
-  return uint32_t(std::lround(std::sqrt(double(options.samplesPerPixel))));
+// The settings of one render: flags, else the scene's render block, else the defaults.
+struct RenderJob {
+  uint32_t width = 640, height = 480;
+  uint32_t samplesPerPixel = 1, samplesPerSide = 1;
+  bool filterBox = false;
+};
+
+bool resolveJob(const RenderOptions& options, const Scene& scene, RenderJob* job, std::string* error) {
+  const RenderSettings& s = scene.render;
+  job->width = options.width.value_or(uint32_t(s.width.value_or(640)));
+  job->height = options.height.value_or(uint32_t(s.height.value_or(480)));
+  job->samplesPerPixel = options.samplesPerPixel.value_or(uint32_t(s.samplesPerPixel.value_or(1)));
+  job->samplesPerSide = uint32_t(std::lround(std::sqrt(double(job->samplesPerPixel))));
+  job->filterBox = options.filter.value_or(s.filterBox.value_or(false));
+  if (uint64_t(job->width) * job->height > kMaxPixels) {
+    *error = std::to_string(job->width) + "x" + std::to_string(job->height) + " exceeds the limit of " +
+             std::to_string(kMaxPixels) + " pixels (8192x8192)";
+    return false;
+  }
+  return true;
 }
 
 int writeImage(const RenderOptions& options, const ImageRGBA8& image, size_t nonFinite) {
@@ -38,10 +56,11 @@ int writeImage(const RenderOptions& options, const ImageRGBA8& image, size_t non
 }
 
 // The float64 CPU reference: no Vulkan at all.
-int runReference(const RenderOptions& options, const Scene& scene, Clock::time_point t, double parseMs) {
+int runReference(const RenderOptions& options, const RenderJob& job, const Scene& scene, Clock::time_point t,
+                 double parseMs) {
   ReferenceImage reference;
   try {
-    reference = renderReference(scene, int(options.width), int(options.height), int(samplesPerSide(options)));
+    reference = renderReference(scene, int(job.width), int(job.height), int(job.samplesPerSide));
   } catch (const SceneError& e) {
     fprintf(stderr, "%s\n", e.what());
     return 2;
@@ -49,12 +68,12 @@ int runReference(const RenderOptions& options, const Scene& scene, Clock::time_p
   double renderMs = msSince(t);
   std::vector<float> rgba = referenceToRgba(reference);
   size_t nonFinite = 0;
-  ImageRGBA8 image = encodeSrgb(rgba.data(), int(options.width), int(options.height), &nonFinite);
+  ImageRGBA8 image = encodeSrgb(rgba.data(), int(job.width), int(job.height), &nonFinite);
   if (int rc = writeImage(options, image, nonFinite)) return rc;
   double encodeMs = msSince(t);
   if (options.stats)
     printf("parse %.1f ms | reference %.1f ms | encode %.1f ms | %ux%u, %u spp\n", parseMs, renderMs,
-           encodeMs, options.width, options.height, options.samplesPerPixel);
+           encodeMs, job.width, job.height, job.samplesPerPixel);
   return 0;
 }
 
@@ -63,17 +82,21 @@ int runRender(const RenderOptions& options) {
   // Parse (and, for Vulkan, load images) before touching Vulkan: bad input fails fast.
   Scene scene;
   GpuScene gpuScene;
+  RenderJob job;
   try {
     scene = parseSceneFile(options.scene);
-    if (!options.reference) {
-      gpuScene = buildGpuScene(scene, options.width, options.height);
+    std::string error;
+    if (!resolveJob(options, scene, &job, &error)) {
+      fprintf(stderr, "raytex: %s\n", error.c_str());
+      return 2;
     }
+    if (!options.reference) gpuScene = buildGpuScene(scene, job.width, job.height);
   } catch (const SceneError& e) {
     fprintf(stderr, "%s\n", e.what());
     return 2;
   }
   double parseMs = msSince(t);
-  if (options.reference) return runReference(options, scene, t, parseMs);
+  if (options.reference) return runReference(options, job, scene, t, parseMs);
 
   Renderer renderer;
   double deviceMs = 0, uploadMs = 0, pipelineMs = 0, renderMs = 0, readbackMs = 0;
@@ -85,12 +108,12 @@ int runRender(const RenderOptions& options) {
     uploadScene(renderer, gpuScene);
     uploadMs = msSince(t);
     preparePipeline(renderer, {gpuScene.textureKinds, OUTPUT_SHADED,
-                               uint32_t(options.filter ? FILTER_BOX : FILTER_POINT), samplesPerSide(options)});
+                               uint32_t(job.filterBox ? FILTER_BOX : FILTER_POINT), job.samplesPerSide});
     pipelineMs = msSince(t);
     renderFrame(renderer);
     renderMs = msSince(t);
     readbackFrame(renderer);
-    image = encodeSrgb(framePixels(renderer), int(options.width), int(options.height), &nonFinite);
+    image = encodeSrgb(framePixels(renderer), int(job.width), int(job.height), &nonFinite);
     readbackMs = msSince(t);
     int validationErrors = renderer.device.validationErrors;
     destroyRenderer(renderer);
@@ -108,8 +131,8 @@ int runRender(const RenderOptions& options) {
   if (options.stats)
     printf("device %.1f ms | parse %.1f ms | upload %.1f ms | pipeline %.1f ms | render %.1f ms | "
            "readback %.1f ms | encode %.1f ms | %ux%u, %u spp\n",
-           deviceMs, parseMs, uploadMs, pipelineMs, renderMs, readbackMs, encodeMs, options.width,
-           options.height, options.samplesPerPixel);
+           deviceMs, parseMs, uploadMs, pipelineMs, renderMs, readbackMs, encodeMs, job.width, job.height,
+           job.samplesPerPixel);
   return 0;
 }
 

@@ -61,14 +61,14 @@ struct State {
   Scene scene;
   std::map<std::string, int> materialIndex;
   std::vector<OpenFile> includeStack;
-  FileLoc cameraLoc, backgroundLoc, ambientLoc;  // line 0: not given yet
+  FileLoc cameraLoc, renderLoc, backgroundLoc, ambientLoc;  // line 0: not given yet
 };
 
 void parseText(State& st, const std::string& text, const std::string& file);
 
 // Words that cannot name a material (they would read as keys or blocks).
 bool isReserved(const std::string& w) {
-  static const char* const words[] = {"sphere", "plane", "camera",    "light",    "material", "background",
+  static const char* const words[] = {"sphere", "plane", "camera",    "light",    "material", "render", "background",
                                       "ambient_light", "center", "radius", "normal", "distance", "tex_scale",
                                       "texture"};
   for (const char* r : words)
@@ -77,7 +77,7 @@ bool isReserved(const std::string& w) {
 }
 
 bool isBlockKeyword(const std::string& w) {
-  return w == "sphere" || w == "plane" || w == "camera" || w == "light" || w == "material";
+  return w == "sphere" || w == "plane" || w == "camera" || w == "light" || w == "material" || w == "render";
 }
 
 // Which texture keys apply to which kinds (docs/scene-format.md).
@@ -104,7 +104,7 @@ class Parser {
         continue;
       }
       if (t.kind != Tok::Ident)
-        fail(t.loc, "expected sphere, plane, material, camera, light, background, ambient_light or #include, got " +
+        fail(t.loc, "expected sphere, plane, material, camera, light, render, background, ambient_light or #include, got " +
                         describe(t));
       Token kw = take();
       if (kw.text == "sphere") parseSphere(kw);
@@ -112,6 +112,7 @@ class Parser {
       else if (kw.text == "material") parseMaterial();
       else if (kw.text == "camera") parseCamera(kw);
       else if (kw.text == "light") parseLight();
+      else if (kw.text == "render") parseRender(kw);
       else if (kw.text == "background") topColor(kw, &st_.scene.background, &st_.backgroundLoc);
       else if (kw.text == "ambient_light") topColor(kw, &st_.scene.ambientLight, &st_.ambientLoc);
       else fail(kw.loc, "unknown top-level keyword '" + kw.text + "'");
@@ -399,6 +400,40 @@ class Parser {
     double upLen = glm::length(up);
     if (!(upLen > 0.0) || glm::length(glm::cross(dir / glm::length(dir), up / upLen)) < 1e-6)
       fail(upLoc, "camera up must be non-zero and not parallel to the view direction");
+  }
+
+  // render { width = W; height = H; spp = N; filter = point|box; }
+  void parseRender(const Token& kw) {
+    if (st_.renderLoc.line > 0) fail(kw.loc, "duplicate render (first defined at " + locString(st_.renderLoc) + ")");
+    st_.renderLoc = kw.loc;
+    RenderSettings& r = st_.scene.render;
+    Seen seen;
+    block("render", [&](const Token& key) {
+      assignKnown(key, seen, "render", {"width", "height", "spp", "filter"});
+      if (key.text == "filter") {
+        Token v = take();
+        if (v.kind != Tok::Ident || (v.text != "point" && v.text != "box"))
+          fail(v.loc, "filter must be point or box, got " + describe(v));
+        r.filterBox = v.text == "box";
+      } else {
+        FileLoc loc;
+        std::string text;
+        double v = number(&loc, &text);
+        bool isSize = key.text != "spp";
+        double hi = isSize ? 16384.0 : 4096.0;
+        if (!(v >= 1.0 && v <= hi) || v != std::floor(v))
+          fail(loc, key.text + " must be a whole number from 1 to " + std::to_string(int(hi)) + ", got " + text);
+        int n = int(v);
+        if (key.text == "width") r.width = n;
+        else if (key.text == "height") r.height = n;
+        else {
+          int side = int(std::lround(std::sqrt(v)));
+          if (side * side != n) fail(loc, "spp must be a square number (1, 4, 9, 16, ...), got " + text);
+          r.samplesPerPixel = n;
+        }
+      }
+      semicolon("the value of '" + key.text + "'");
+    });
   }
 
   void parseLight() {

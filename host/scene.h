@@ -5,6 +5,7 @@
 
 #include <glm/vec3.hpp>
 
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -90,8 +91,16 @@ struct Camera {
   double fovY = 45.0;
 };
 
+// How to render, as a scene file may ask with `render { ... }`; command-line flags override.
+struct RenderSettings {
+  std::optional<int> width, height;
+  std::optional<int> samplesPerPixel;  // a square number: an N x N stratified grid
+  std::optional<bool> filterBox;       // textures filtered over footprints (else point-sampled)
+};
+
 struct Scene {
   std::string path;  // the top-level scene file
+  RenderSettings render;
   Camera camera;
   std::vector<Light> lights;
   glm::vec3 background{0.0f};

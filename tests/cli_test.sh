@@ -57,6 +57,17 @@ check png-signature test "$(head -c 8 "$tmp/ok.png" | od -An -tx1 | tr -d ' \n')
 check png-size test "$(od -An -tu1 -j16 -N8 "$tmp/ok.png" | tr -s ' ')" = " 0 0 0 64 0 0 0 48"
 check no-temp-files test "$(ls "$tmp" | grep -c tmp-)" -eq 0
 
+# The scene's render block sets size, samples and filter; flags override it.
+sed 's|^camera {|render { width = 40; height = 30; spp = 4; filter = box; }\ncamera {|' \
+  "$src/scenes/textures.cfg" >"$src/scenes/.cli-test-render.cfg"
+expect render-block 0 '\| 40x30, 4 spp$' -- "$raytex" render "$src/scenes/.cli-test-render.cfg" -o "$tmp/rb.png" --stats
+expect render-block-override 0 '\| 20x30, 1 spp$' -- "$raytex" render "$src/scenes/.cli-test-render.cfg" \
+  -o "$tmp/rb.png" --stats --width 20 --spp 1
+sed 's|^camera {|render { width = 9000; height = 9000; }\ncamera {|' \
+  "$src/scenes/textures.cfg" >"$src/scenes/.cli-test-render.cfg"
+expect render-block-too-big 2 '9000x9000 exceeds the limit' -- "$raytex" render "$src/scenes/.cli-test-render.cfg" -o "$tmp/big.png"
+rm -f "$src/scenes/.cli-test-render.cfg"
+
 # An existing output is replaced whole, never left half-written, on success and failure.
 cp "$tmp/ok.png" "$tmp/keep.png"
 expect keep-on-error 2 'typo.cfg:3:3' -- "$raytex" render "$tmp/typo.cfg" -o "$tmp/keep.png"

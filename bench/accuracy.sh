@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# The speed-accuracy chart: renders the course scene's textures and the horizon scene with
+# every method and sample count, times them on the GPU and measures their error against
+# the float64 reference, then draws docs/accuracy.png and writes docs/accuracy.csv.
+# Usage: bench/accuracy.sh [WIDTH HEIGHT RUNS]   (default 160 120 5; needs build/ and
+#        python3-matplotlib, python3-skimage, python3-numpy from Debian)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+width=${1:-160} height=${2:-120} runs=${3:-5}
+out=build/accuracy
+mkdir -p "$out"
+scenes=()
+variants=()
+trap 'rm -f "${variants[@]}"' EXIT
+# The course scene with another material on the sphere, switched as the notes say.
+for material in aSolidChecker aMarble anImage; do
+  scene=$(mktemp scenes/.gallery-XXXXXX.cfg)  # beside textures.cfg so its #include resolves
+  variants+=("$scene")
+  if [ "$material" = aSolidChecker ]; then
+    cp scenes/textures.cfg "$scene"
+  else
+    sed -e 's|^    aSolidChecker;|    // aSolidChecker;|' -e "s|^    // $material;|    $material;|" \
+      scenes/textures.cfg >"$scene"
+  fi
+  scenes+=("$material=$scene")
+done
+scenes+=("horizon=scenes/horizon.cfg")
+build/raytex_bench_accuracy "$out" "$width" "$height" "$runs" "${scenes[@]}"
+/usr/bin/python3 bench/accuracy_chart.py "$out/accuracy.csv" docs/accuracy.png docs/accuracy.csv
