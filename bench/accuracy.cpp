@@ -4,6 +4,7 @@
 // Writes OUTDIR/accuracy.csv and the images (sRGB PNG) that bench/accuracy_chart.py reads.
 // Usage: raytex_bench_accuracy OUTDIR WIDTH HEIGHT RUNS NAME=SCENE [NAME=SCENE ...]
 #include "common.h"
+#include "median.h"
 #include "gpu_scene.h"
 #include "image_io.h"
 #include "parser.h"
@@ -18,20 +19,6 @@
 #include <string>
 #include <vector>
 
-namespace {
-
-double rmse(const float* rgba, const ReferenceImage& ref) {
-  double sum = 0.0;
-  size_t n = size_t(ref.width) * ref.height;
-  for (size_t i = 0; i < n; ++i)
-    for (int c = 0; c < 3; ++c) {
-      double d = double(rgba[i * 4 + c]) - ref.rgb[i * 3 + c];
-      sum += d * d;
-    }
-  return std::sqrt(sum / double(3 * n));
-}
-
-}  // namespace
 
 int main(int argc, char** argv) {
   if (argc < 6) {
@@ -85,14 +72,13 @@ int main(int argc, char** argv) {
             renderFrame(r);
             ms.push_back(r.lastFrameMs);
           }
-          std::sort(ms.begin(), ms.end());
           readbackFrame(r);
-          double error = rmse(framePixels(r), ref);
+          double error = rmseAgainstReference(framePixels(r), ref);
           std::string image = name + "_" + m.name + "_" + std::to_string(side * side) + ".png";
           writePngAtomic(outDir + "/" + image, encodeSrgb(framePixels(r), width, height));
-          fprintf(csv, "%s,%s,%u,%.3f,%.6f,%s,%s\n", name.c_str(), m.name, side * side, ms[ms.size() / 2],
+          fprintf(csv, "%s,%s,%u,%.3f,%.6f,%s,%s\n", name.c_str(), m.name, side * side, median(ms),
                   error, image.c_str(), refImage.c_str());
-          printf("  %-6s %3u spp  %9.2f ms  RMSE %.5f\n", m.name, side * side, ms[ms.size() / 2], error);
+          printf("  %-6s %3u spp  %9.2f ms  RMSE %.5f\n", m.name, side * side, median(ms), error);
         }
       }
     }

@@ -2,6 +2,7 @@
 // sampling and filtering methods on one scene, median of RUNS frames after a warm-up frame.
 // Usage: raytex_bench_methods SCENE [WIDTH HEIGHT RUNS]
 #include "common.h"
+#include "median.h"
 #include "gpu_scene.h"
 #include "parser.h"
 #include "renderer.h"
@@ -41,8 +42,7 @@ int main(int argc, char** argv) {
         renderFrame(r);
         ms.push_back(r.lastFrameMs);  // GPU timestamps where supported
       }
-      std::sort(ms.begin(), ms.end());
-      printf("  %-14s %8.1f ms\n", m.name, ms[ms.size() / 2]);
+      printf("  %-14s %8.1f ms\n", m.name, median(ms));
     }
     destroyRenderer(r);
   } catch (const std::exception& e) {

@@ -3,6 +3,7 @@
 // Usage: raytex_bench_specialisation SCENE [WIDTH HEIGHT RUNS]
 // Run with MESA_SHADER_CACHE_DISABLE=true so each pipeline is compiled for real.
 #include "common.h"
+#include "median.h"
 #include "gpu_scene.h"
 #include "parser.h"
 #include "renderer.h"
@@ -21,10 +22,6 @@ double msSince(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
-}
 
 }  // namespace
 

@@ -135,6 +135,17 @@ ReferenceImage renderReference(const Scene& scene, int width, int height, int sa
   return out;
 }
 
+double rmseAgainstReference(const float* rgba, const ReferenceImage& ref) {
+  double sum = 0.0;
+  size_t n = size_t(ref.width) * ref.height;
+  for (size_t i = 0; i < n; ++i)
+    for (int c = 0; c < 3; ++c) {
+      double d = double(rgba[i * 4 + c]) - ref.rgb[i * 3 + c];
+      sum += d * d;
+    }
+  return n ? std::sqrt(sum / double(3 * n)) : 0.0;
+}
+
 std::vector<float> referenceToRgba(const ReferenceImage& image) {
   std::vector<float> rgba(size_t(image.width) * image.height * 4, 1.0f);
   for (size_t i = 0; i < size_t(image.width) * image.height; ++i)

@@ -33,5 +33,9 @@ glm::dvec3 sampleImageReference(const ImageRGBA8& image, glm::dvec2 uv, bool cla
 ReferenceImage renderReference(const Scene& scene, int width, int height, int samplesPerSide,
                                int threads = 0);
 
+// Root-mean-square difference of the RGB channels of linear RGBA floats (a GPU image) from
+// the reference, over every pixel.
+double rmseAgainstReference(const float* rgba, const ReferenceImage& reference);
+
 // Linear RGBA floats (alpha 1) for encodeSrgb.
 std::vector<float> referenceToRgba(const ReferenceImage& image);

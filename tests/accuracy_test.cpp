@@ -23,18 +23,6 @@ std::string readFile(const std::string& path) {
   return ss.str();
 }
 
-// Root-mean-square difference of the RGB channels, linear values.
-double rmse(const std::vector<float>& gpu, const ReferenceImage& ref) {
-  double sum = 0.0;
-  size_t n = size_t(ref.width) * ref.height;
-  for (size_t i = 0; i < n; ++i)
-    for (int c = 0; c < 3; ++c) {
-      double d = double(gpu[i * 4 + c]) - ref.rgb[i * 3 + c];
-      sum += d * d;
-    }
-  return std::sqrt(sum / double(3 * n));
-}
-
 // The checker floor toward the horizon (accuracy notes F4: camera 1 above the floor, 8 degrees
 // down, 60 degree fov, unit checks), lit by the ambient term alone so pixels are texture.
 Scene horizonScene() {
@@ -99,7 +87,7 @@ TEST_F(RenderTest, SupersamplingConvergesToTheReference) {
   for (int n : {1, 2, 4, 8}) {
     std::vector<float> gpu = render(scene, w, h, OUTPUT_SHADED, uint32_t(n));
     EXPECT_EQ(countNonFinite(gpu), 0u);
-    double e = rmse(gpu, ref);
+    double e = rmseAgainstReference(gpu.data(), ref);
     errors.push_back(e);
     EXPECT_LT(e, previous) << n << "x" << n << " samples";
     previous = e;

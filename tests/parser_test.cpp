@@ -377,7 +377,7 @@ TEST(ParserErrors, UnknownTopLevelKeyword) {
   EXPECT_EQ(errorOf("\n  spher {\n}\n"), "t.cfg:2:3: unknown top-level keyword 'spher'");
   EXPECT_EQ(errorOf("radius = 2;"), "t.cfg:1:1: unknown top-level keyword 'radius'");
   EXPECT_EQ(errorOf("sphere { } }"),
-            "t.cfg:1:12: expected sphere, plane, material, camera, light, background, ambient_light or "
+            "t.cfg:1:12: expected sphere, plane, material, camera, light, render, background, ambient_light or "
             "#include, got '}'");
 }
 

@@ -846,10 +846,7 @@ TEST_F(StabilityTest, FarSceneRendersLikeTheOrigin) {
   Scene origin = build(0.0);
   std::vector<float> base = render(origin, w, h, OUTPUT_SHADED);
   ReferenceImage ref = renderReference(origin, w, h, 4);
-  double floorSum = 0.0;
-  for (size_t i = 0; i < size_t(w) * h; ++i)
-    for (int c = 0; c < 3; ++c) floorSum += std::pow(double(base[i * 4 + c]) - ref.rgb[i * 3 + c], 2.0);
-  const double noiseFloor = std::sqrt(floorSum / (3.0 * w * h));
+  const double noiseFloor = rmseAgainstReference(base.data(), ref);
   RecordProperty("noise_floor_rmse", fmt(noiseFloor));
   for (double X : {1048576.0, 1179648.0}) {
     SCOPED_TRACE("X = " + fmt(X));
