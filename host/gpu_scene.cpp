@@ -179,10 +179,17 @@ GpuScene buildGpuScene(const Scene& scene, uint32_t width, uint32_t height) {
       g.imageHeight = std::max(g.imageHeight, image.height);
     }
     g.imageLayers = int(images.size());
+    g.imageLevels = mipLevelCount(g.imageWidth, g.imageHeight);
+    std::vector<std::vector<ImageRGBA8>> chains;
     for (const ImageRGBA8& image : images) {
-      ImageRGBA8 layer = resizeImage(image, g.imageWidth, g.imageHeight);
+      chains.push_back(mipChain(resizeImage(image, g.imageWidth, g.imageHeight)));
+      const ImageRGBA8& layer = chains.back()[0];
       g.imagePixels.insert(g.imagePixels.end(), layer.pixels.begin(), layer.pixels.end());
     }
+    for (int level = 1; level < g.imageLevels; ++level)
+      for (const std::vector<ImageRGBA8>& chain : chains)
+        g.imageMipPixels.insert(g.imageMipPixels.end(), chain[size_t(level)].pixels.begin(),
+                                chain[size_t(level)].pixels.end());
   }
   return g;
 }

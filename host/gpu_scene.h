@@ -20,6 +20,11 @@ struct GpuScene {
   // Image textures in use, all resampled to one size: layer i is material imageLayer i.
   int imageWidth = 1, imageHeight = 1, imageLayers = 0;
   std::vector<uint8_t> imagePixels;  // RGBA8 sRGB, layer after layer
+  // Full mip chains (mipChain in image_io.h) for the filtered kernel: imageLevels levels,
+  // level l being max(1, w >> l) x max(1, h >> l); imageMipPixels holds levels 1.. (level 0 is
+  // imagePixels), level after level, each level layer after layer.
+  int imageLevels = 1;
+  std::vector<uint8_t> imageMipPixels;
 };
 
 // Throws SceneError (with the texture's file location) if an image in use cannot be

@@ -50,6 +50,178 @@ ImageRGBA8 resizeImage(const ImageRGBA8& image, int width, int height) {
   return out;
 }
 
+namespace {
+
+// sRGB code value -> linear, for the 256 codes.
+const float* srgbDecodeTable() {
+  static const std::vector<float> table = [] {
+    std::vector<float> t(256);
+    for (int i = 0; i < 256; ++i) t[size_t(i)] = float(srgbToLinear(i / 255.0));
+    return t;
+  }();
+  return table.data();
+}
+
+// Linear [0, 1] -> the nearest sRGB code value, round(linearToSrgb(v) * 255), exactly: a table
+// gives a guess within one code, and the linear values of the midpoints between codes settle it.
+struct SrgbEncoder {
+  static constexpr int kSteps = 4096;
+  float midpoints[256];  // linear value where code i turns into code i + 1 (the last: above 1)
+  uint8_t guess[kSteps + 1];
+  SrgbEncoder() {
+    for (int i = 0; i < 255; ++i) midpoints[i] = float(srgbToLinear((i + 0.5) / 255.0));
+    midpoints[255] = 2.0f;
+    for (int i = 0; i <= kSteps; ++i) guess[i] = uint8_t(std::lround(linearToSrgb(double(i) / kSteps) * 255.0));
+  }
+  uint8_t operator()(float v) const {
+    v = std::min(std::max(v, 0.0f), 1.0f);
+    int c = guess[int(v * kSteps + 0.5f)];
+    while (c > 0 && v < midpoints[c - 1]) --c;
+    while (c < 255 && v >= midpoints[c]) ++c;
+    return uint8_t(c);
+  }
+};
+
+// Area-weighted box reduction along one axis: destination texel i covers source texels
+// [i r, (i + 1) r), r = from / to, with fractional weights at the ends (exact for odd sizes).
+struct AxisWeights {
+  std::vector<int> first;       // first source texel of each destination texel
+  std::vector<float> weights;   // per destination texel: `span` weights from `first`
+  int span = 0;
+};
+
+AxisWeights axisWeights(int from, int to) {
+  AxisWeights a;
+  double r = double(from) / to;
+  a.span = int(std::ceil(r)) + 1;
+  a.first.resize(size_t(to));
+  a.weights.assign(size_t(to) * a.span, 0.0f);
+  for (int i = 0; i < to; ++i) {
+    double lo = i * r, hi = (i + 1) * r;
+    int j0 = int(std::floor(lo));
+    a.first[size_t(i)] = j0;
+    for (int k = 0; k < a.span; ++k) {
+      int j = j0 + k;
+      if (j >= from) break;
+      double overlap = std::min(hi, j + 1.0) - std::max(lo, double(j));
+      if (overlap > 0.0) a.weights[size_t(i) * a.span + k] = float(overlap / r);
+    }
+  }
+  return a;
+}
+
+// Linear RGBA floats, row 0 at the top.
+struct LinearImage {
+  int width = 0, height = 0;
+  std::vector<float> rgba;
+};
+
+LinearImage downsample(const LinearImage& in, int width, int height) {
+  LinearImage out;
+  out.width = width;
+  out.height = height;
+  out.rgba.assign(size_t(width) * height * 4, 0.0f);
+  if (in.width == 2 * width && in.height == 2 * height) {  // even sizes: a plain 2x2 box
+    for (int y = 0; y < height; ++y) {
+      const float* r0 = &in.rgba[size_t(2 * y) * in.width * 4];
+      const float* r1 = r0 + size_t(in.width) * 4;
+      float* o = &out.rgba[size_t(y) * width * 4];
+      for (int x = 0; x < width; ++x)
+        for (int c = 0; c < 4; ++c) {
+          size_t a = size_t(2 * x) * 4 + c, b = a + 4;
+          o[size_t(x) * 4 + c] = 0.25f * ((r0[a] + r0[b]) + (r1[a] + r1[b]));
+        }
+    }
+    return out;
+  }
+  AxisWeights wx = axisWeights(in.width, width), wy = axisWeights(in.height, height);
+  // Columns first (width x in.height), then rows.
+  std::vector<float> tmp(size_t(width) * in.height * 4, 0.0f);
+  for (int y = 0; y < in.height; ++y)
+    for (int x = 0; x < width; ++x) {
+      float* o = &tmp[(size_t(y) * width + x) * 4];
+      for (int k = 0; k < wx.span; ++k) {
+        float w = wx.weights[size_t(x) * wx.span + k];
+        if (w == 0.0f) continue;
+        const float* p = &in.rgba[(size_t(y) * in.width + wx.first[size_t(x)] + k) * 4];
+        for (int c = 0; c < 4; ++c) o[c] += w * p[c];
+      }
+    }
+  for (int y = 0; y < height; ++y)
+    for (int k = 0; k < wy.span; ++k) {
+      float w = wy.weights[size_t(y) * wy.span + k];
+      if (w == 0.0f) continue;
+      const float* row = &tmp[size_t(wy.first[size_t(y)] + k) * width * 4];
+      float* o = &out.rgba[size_t(y) * width * 4];
+      for (size_t i = 0; i < size_t(width) * 4; ++i) o[i] += w * row[i];
+    }
+  return out;
+}
+
+ImageRGBA8 encodeLevel(const LinearImage& in) {
+  static const SrgbEncoder encodeSrgbCode;
+  ImageRGBA8 out;
+  out.width = in.width;
+  out.height = in.height;
+  out.pixels.resize(in.rgba.size());
+  for (size_t i = 0; i < in.rgba.size(); i += 4) {
+    for (int c = 0; c < 3; ++c) out.pixels[i + c] = encodeSrgbCode(in.rgba[i + c]);
+    out.pixels[i + 3] = uint8_t(std::lround(std::min(std::max(in.rgba[i + 3], 0.0f), 1.0f) * 255.0f));
+  }
+  return out;
+}
+
+}  // namespace
+
+int mipLevelCount(int width, int height) {
+  int levels = 1;
+  for (int size = std::max(width, height); size > 1; size >>= 1) ++levels;
+  return levels;
+}
+
+std::vector<ImageRGBA8> mipChain(const ImageRGBA8& image) { return mipChain(ImageRGBA8(image)); }
+
+std::vector<ImageRGBA8> mipChain(ImageRGBA8&& level0) {
+  const int levels = mipLevelCount(level0.width, level0.height);
+  std::vector<ImageRGBA8> chain;
+  chain.reserve(size_t(levels));  // no reallocation: `image` stays valid
+  chain.push_back(std::move(level0));
+  const ImageRGBA8& image = chain[0];
+  if (image.width <= 0 || image.height <= 0 || levels == 1) return chain;
+  const float* decode = srgbDecodeTable();
+  auto linear = [&](size_t i, int c) { return c < 3 ? decode[image.pixels[i + c]] : image.pixels[i + c] / 255.0f; };
+  LinearImage level;
+  int w1 = std::max(1, image.width >> 1), h1 = std::max(1, image.height >> 1);
+  if (image.width == 2 * w1 && image.height == 2 * h1) {
+    // Even sizes: level 1 straight from the bytes (no float copy of the large level 0).
+    level.width = w1;
+    level.height = h1;
+    level.rgba.resize(size_t(w1) * h1 * 4);
+    for (int y = 0; y < h1; ++y)
+      for (int x = 0; x < w1; ++x) {
+        size_t a = (size_t(2 * y) * image.width + 2 * x) * 4, b = a + 4;
+        size_t c = a + size_t(image.width) * 4, d = c + 4;
+        for (int k = 0; k < 4; ++k)
+          level.rgba[(size_t(y) * w1 + x) * 4 + k] =
+              0.25f * ((linear(a, k) + linear(b, k)) + (linear(c, k) + linear(d, k)));
+      }
+  } else {
+    LinearImage base;
+    base.width = image.width;
+    base.height = image.height;
+    base.rgba.resize(image.pixels.size());
+    for (size_t i = 0; i < image.pixels.size(); i += 4)
+      for (int k = 0; k < 4; ++k) base.rgba[i + k] = linear(i, k);
+    level = downsample(base, w1, h1);
+  }
+  chain.push_back(encodeLevel(level));
+  for (int i = 2; i < levels; ++i) {
+    level = downsample(level, std::max(1, image.width >> i), std::max(1, image.height >> i));
+    chain.push_back(encodeLevel(level));
+  }
+  return chain;
+}
+
 double srgbToLinear(double c) {
   return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
 }

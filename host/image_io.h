@@ -18,6 +18,18 @@ bool loadImage(const std::string& path, ImageRGBA8* image, std::string* error);
 // Resamples an sRGB-encoded image (filtering in linear light).
 ImageRGBA8 resizeImage(const ImageRGBA8& image, int width, int height);
 
+// Number of levels of a full mip chain: floor(log2(max(width, height))) + 1.
+int mipLevelCount(int width, int height);
+
+// The full mip chain of an sRGB-encoded RGBA8 image, level 0 (the image itself) first, the 1x1
+// level last. Level i is max(1, w >> i) x max(1, h >> i) (Vulkan's rule). Each texel is the
+// exact area average of the previous level's texels under it, in linear light (RGB decoded
+// from sRGB, alpha linear), re-encoded to sRGB: an odd size still averages every texel, with
+// fractional weights, so the texel grid keeps covering [0,1]^2 exactly. Levels are computed
+// from the previous level's unrounded linear values (no 8-bit rounding builds up).
+std::vector<ImageRGBA8> mipChain(const ImageRGBA8& image);
+std::vector<ImageRGBA8> mipChain(ImageRGBA8&& image);  // moves the image into level 0
+
 // Linear float RGBA (row 0 at the top) to sRGB-encoded RGBA8, clamped to [0, 1].
 // Non-finite channels become 0 and are counted in *nonFinite when given.
 ImageRGBA8 encodeSrgb(const float* rgba, int width, int height, size_t* nonFinite = nullptr);

@@ -88,15 +88,18 @@ void createRenderer(Renderer& r, const DeviceOptions& options) {
   setInfo.pSetLayouts = &r.setLayout;
   VK_CHECK(vkAllocateDescriptorSets(r.device.device, &setInfo, &r.descriptorSet));
 
-  // Bilinear, repeating: u wraps around the sphere and tiles repeat on planes.
+  // Bilinear, repeating: u wraps around the sphere and tiles repeat on planes. Trilinear between
+  // mip levels: the point kernel reads level 0 only (textureLod 0), the filtered kernel picks a
+  // level from the sample's footprint (textures.glsl, imageTextureColor). No maxLod limit: the
+  // view's level count is the limit.
   VkSamplerCreateInfo samplerInfo{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
   samplerInfo.magFilter = VK_FILTER_LINEAR;
   samplerInfo.minFilter = VK_FILTER_LINEAR;
-  samplerInfo.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
+  samplerInfo.mipmapMode = VK_SAMPLER_MIPMAP_MODE_LINEAR;
   samplerInfo.addressModeU = VK_SAMPLER_ADDRESS_MODE_REPEAT;
   samplerInfo.addressModeV = VK_SAMPLER_ADDRESS_MODE_REPEAT;
   samplerInfo.addressModeW = VK_SAMPLER_ADDRESS_MODE_REPEAT;
-  samplerInfo.maxLod = 0.0f;
+  samplerInfo.maxLod = VK_LOD_CLAMP_NONE;
   VK_CHECK(vkCreateSampler(r.device.device, &samplerInfo, nullptr, &r.sampler));
 
   // GPU frame times, where the queue supports timestamps.
@@ -148,10 +151,14 @@ void uploadScene(Renderer& r, const GpuScene& s) {
   bool hasImages = s.imageLayers > 0;
   uint32_t w = hasImages ? uint32_t(s.imageWidth) : 1, h = hasImages ? uint32_t(s.imageHeight) : 1;
   uint32_t layers = hasImages ? uint32_t(s.imageLayers) : 1;
+  uint32_t levels = hasImages ? uint32_t(s.imageLevels) : 1;  // full mip chains
   r.images = createImage(r.device, w, h, layers, VK_FORMAT_R8G8B8A8_SRGB,
-                         VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT, true);
-  uploadImageLayers(r.device, r.images, hasImages ? s.imagePixels.data() : placeholder,
-                    VkDeviceSize(w) * h * layers * 4);
+                         VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT, true, levels);
+  if (hasImages)
+    uploadImageLayers(r.device, r.images, {{s.imagePixels.data(), s.imagePixels.size()},
+                                           {s.imageMipPixels.data(), s.imageMipPixels.size()}});
+  else
+    uploadImageLayers(r.device, r.images, placeholder, sizeof(placeholder));
 
   if (s.frame.width != r.width || s.frame.height != r.height || !r.output.image)
     createOutput(r, s.frame.width, s.frame.height);

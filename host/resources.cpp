@@ -1,6 +1,9 @@
 #include "resources.h"
 
+#include <algorithm>
 #include <cstring>
+#include <string>
+#include <vector>
 
 namespace {
 
@@ -59,17 +62,18 @@ void writeBuffer(Buffer& b, const void* data, VkDeviceSize size) {
 }
 
 Image createImage(const Device& device, uint32_t width, uint32_t height, uint32_t layers,
-                  VkFormat format, VkImageUsageFlags usage, bool asArray) {
+                  VkFormat format, VkImageUsageFlags usage, bool asArray, uint32_t levels) {
   Image img;
   img.format = format;
   img.width = width;
   img.height = height;
   img.layers = layers;
+  img.levels = levels;
   VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
   info.imageType = VK_IMAGE_TYPE_2D;
   info.format = format;
   info.extent = {width, height, 1};
-  info.mipLevels = 1;
+  info.mipLevels = levels;
   info.arrayLayers = layers;
   info.samples = VK_SAMPLE_COUNT_1_BIT;
   info.tiling = VK_IMAGE_TILING_OPTIMAL;
@@ -86,7 +90,7 @@ Image createImage(const Device& device, uint32_t width, uint32_t height, uint32_
   viewInfo.image = img.image;
   viewInfo.viewType = asArray ? VK_IMAGE_VIEW_TYPE_2D_ARRAY : VK_IMAGE_VIEW_TYPE_2D;
   viewInfo.format = format;
-  viewInfo.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, layers};
+  viewInfo.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, levels, 0, layers};
   VK_CHECK(vkCreateImageView(device.device, &viewInfo, nullptr, &img.view));
   return img;
 }
@@ -109,7 +113,7 @@ void imageBarrier(VkCommandBuffer cmd, VkImage image, VkImageLayout from, VkImag
   barrier.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
   barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
   barrier.image = image;
-  barrier.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, VK_REMAINING_ARRAY_LAYERS};
+  barrier.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, VK_REMAINING_MIP_LEVELS, 0, VK_REMAINING_ARRAY_LAYERS};
   vkCmdPipelineBarrier(cmd, srcStage, dstStage, 0, 0, nullptr, 0, nullptr, 1, &barrier);
 }
 
@@ -141,18 +145,37 @@ void submitAndWait(const Device& device, VkCommandBuffer cmd) {
   VK_CHECK(result);
 }
 
-void uploadImageLayers(const Device& device, Image& image, const void* pixels, VkDeviceSize bytes) {
-  Buffer staging = createBuffer(device, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
-  writeBuffer(staging, pixels, bytes);
+void uploadImageLayers(const Device& device, Image& image, std::initializer_list<HostBytes> parts) {
+  // One copy region per mip level, each covering every layer.
+  std::vector<VkBufferImageCopy> regions;
+  VkDeviceSize total = 0;
+  for (uint32_t level = 0; level < image.levels; ++level) {
+    uint32_t w = std::max(1u, image.width >> level), h = std::max(1u, image.height >> level);
+    VkBufferImageCopy region{};
+    region.bufferOffset = total;
+    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, level, 0, image.layers};
+    region.imageExtent = {w, h, 1};
+    regions.push_back(region);
+    total += VkDeviceSize(w) * h * image.layers * 4;
+  }
+  VkDeviceSize given = 0;
+  for (const HostBytes& part : parts) given += part.size;
+  if (given != total)
+    throw VulkanError("uploadImageLayers: " + std::to_string(given) + " bytes for an image of " +
+                      std::to_string(total));
+
+  Buffer staging = createBuffer(device, total, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
+  VkDeviceSize offset = 0;
+  for (const HostBytes& part : parts) {
+    if (part.size) memcpy(static_cast<uint8_t*>(staging.data) + offset, part.data, part.size);
+    offset += part.size;
+  }
   VkCommandBuffer cmd = beginCommands(device);
   imageBarrier(cmd, image.image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 0,
                VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT,
                VK_PIPELINE_STAGE_TRANSFER_BIT);
-  VkBufferImageCopy region{};
-  region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, image.layers};
-  region.imageExtent = {image.width, image.height, 1};
-  vkCmdCopyBufferToImage(cmd, staging.buffer, image.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,
-                         &region);
+  vkCmdCopyBufferToImage(cmd, staging.buffer, image.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                         uint32_t(regions.size()), regions.data());
   imageBarrier(cmd, image.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
                VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_ACCESS_TRANSFER_WRITE_BIT,
                VK_ACCESS_SHADER_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
@@ -164,4 +187,8 @@ void uploadImageLayers(const Device& device, Image& image, const void* pixels, V
     throw;
   }
   destroyBuffer(device, staging);
+}
+
+void uploadImageLayers(const Device& device, Image& image, const void* pixels, VkDeviceSize bytes) {
+  uploadImageLayers(device, image, {HostBytes{pixels, bytes}});
 }

@@ -1,6 +1,6 @@
 // Ken Perlin's improved noise (SIGGRAPH 2002), its analytic gradient, turbulence
-// and derivative turbulence. The CPU double-precision oracle is host/noise.cpp;
-// keep the two in step.
+// and derivative turbulence, and (RAYTEX_FILTER_BOX) their frequency-clamped forms. The CPU
+// double-precision oracle is host/noise.cpp; keep the two in step.
 //
 // Needs (declared by the including kernel):
 //   layout(std140, binding = BINDING_NOISE) uniform NoiseBlock { NoiseTable noiseTable; };
@@ -128,5 +128,95 @@ float dturbulence(vec3 p, uint octaves) {
   }
   return sum;
 }
+
+#ifdef RAYTEX_FILTER_BOX
+// --- Frequency-clamped noise (FILTER_BOX; accuracy.md L5, pbrt FBm/Turbulence) ---
+// `cells` is the width of a sample's footprint in lattice cells of the noise it filters
+// (textures.glsl, noiseFootprintWidth); octave i of a sum sees cells * 2^i. An octave is
+// replaced by the least-squares estimate of its average over the footprint given its value
+// at the centre, mean + w (value - mean), with w = cov(box average, centre) / variance (an
+// estimate from one sample: a footprint's average is not known). w is measured (docs/textures.md,
+// "Filtering the noise kinds"): along a line L cells long, w = 0.94 (L = 0.5), 0.72 (1.1),
+// 0.47 (1.9), 0.26 (3.2), ~0.8/L beyond for noise; 0.86, 0.52, 0.31, 0.18, ~0.6/L for |noise|.
+// 1/sqrt(1 + (L/c)^2) fits both within 0.051; it is faded to 0 over one octave, from 2 to 4
+// cells, where an octave is dropped: not evaluated, it adds its mean.
+
+// Moments of perlinNoise over uniform random points of one period, [0, 256)^3, measured with
+// host/noise.cpp (two seeds of 10^7 points: E|n| = 0.22279 and 0.22276, Var|n| = 0.02504 and
+// 0.02503; E n = 0). pbrt's Turbulence uses ~0.2 for its noise.
+const float NOISE_ABS_MEAN = 0.2228;
+const float NOISE_ABS_VARIANCE = 0.02503;
+// c in 1/sqrt(1 + (L/c)^2), least-squares fits to the measured w (L from 0.1 to 7.6 cells).
+const float NOISE_WEIGHT_CELLS = 1.05;      // noise
+const float NOISE_ABS_WEIGHT_CELLS = 0.695;  // |noise| (turbulence octaves)
+// An octave fades out from half this footprint width to this one, and is dropped beyond.
+const float NOISE_DROP_CELLS = 4.0;
+
+// The weight w of an octave (noise: c = NOISE_WEIGHT_CELLS; |noise|: NOISE_ABS_WEIGHT_CELLS)
+// whose footprint spans `cells` lattice cells: 1 at 0 cells, 0 from NOISE_DROP_CELLS on (and
+// for a NaN width).
+float octaveWeight(float cells, float c) {
+  if (!(cells < NOISE_DROP_CELLS)) return 0.0;
+  float x = cells * (1.0 / c);
+  return inversesqrt(1.0 + x * x) * (1.0 - smoothstep(0.5 * NOISE_DROP_CELLS, NOISE_DROP_CELLS, cells));
+}
+
+// turbulence(p, octaves) averaged over a footprint `cells` wide at the first octave. Octaves
+// with weight w keep mean + w (|noise| - mean); from the first dropped one on, the rest add
+// their means in closed form, so the octaves evaluated are those under NOISE_DROP_CELLS.
+// `unresolved` returns the variance the footprint averages away, Var|n| sum_i (1 - w_i^2) / 4^i
+// (w = 1: the point value, nothing lost), which marble and wood turn into contrast loss.
+// cells = 0 gives turbulence(p, octaves).
+float filteredTurbulence(vec3 p, uint octaves, float cells, out float unresolved) {
+  float sum = 0.0, lost = 0.0, frequency = 1.0, amplitude = 1.0;
+  uint n = min(octaves, NOISE_MAX_OCTAVES);
+  for (uint i = 0u; i < n; ++i) {
+    float w = octaveWeight(cells * frequency, NOISE_ABS_WEIGHT_CELLS);
+    if (w <= 0.0) break;
+    sum += (NOISE_ABS_MEAN + w * (abs(perlinNoise(p * frequency)) - NOISE_ABS_MEAN)) * amplitude;
+    lost += (1.0 - w * w) * amplitude * amplitude;
+    frequency *= 2.0;
+    amplitude *= 0.5;
+  }
+  // The dropped octaves j = i..n-1 (amplitude = 2^-i): sum 2^-j = 2 (2^-i - 2^-n) and
+  // sum 4^-j = 4/3 (4^-i - 4^-n).
+  float end = exp2(-float(n));
+  sum += NOISE_ABS_MEAN * 2.0 * (amplitude - end);
+  lost += (4.0 / 3.0) * (amplitude * amplitude - end * end);
+  unresolved = NOISE_ABS_VARIANCE * lost;
+  return sum;
+}
+
+// The slope damping of dturbulence where m octaves up to this one are averaged away (their
+// gradients unknown): Ea / e_m - 1, with e_m = E[|n_i| / (1 + |D_i|^2)] measured for all of
+// octaves 0..i random (m = i + 1; 10^6 points: e = 0.1087, 0.0766, 0.0605, 0.0504, ...,
+// 0.0182 for m = 1, 2, 3, 4, ..., 16). 1.047 m^0.852 fits Ea / e_m - 1 within 1 % of the fill.
+float dturbulenceDamping(float m) { return m > 0.0 ? 1.047 * pow(m, 0.852) : 0.0; }
+
+// dturbulence(p, octaves) averaged over a footprint `cells` wide at the first octave. Resolved
+// octaves (weight w) add w times their gradient to the slope and keep mean + w (|noise| - mean);
+// an averaged-away fraction 1 - w adds to m, and every octave is divided by
+// 1 + |slope|^2 + dturbulenceDamping(m): with all octaves dropped that is exactly the measured
+// mean of each octave. Dropped octaves evaluate no noise. cells = 0 gives dturbulence(p, octaves).
+float filteredDturbulence(vec3 p, uint octaves, float cells) {
+  float sum = 0.0, missing = 0.0, frequency = 1.0, amplitude = 1.0;
+  vec3 slope = vec3(0.0);
+  uint n = min(octaves, NOISE_MAX_OCTAVES);
+  for (uint i = 0u; i < n; ++i) {
+    float w = octaveWeight(cells * frequency, NOISE_ABS_WEIGHT_CELLS);
+    float value = NOISE_ABS_MEAN;
+    if (w > 0.0) {
+      vec4 ng = perlinNoiseGrad(p * frequency);
+      slope += w * ng.yzw;
+      value += w * (abs(ng.x) - NOISE_ABS_MEAN);
+    }
+    missing += 1.0 - w;
+    sum += value * amplitude / (1.0 + dot(slope, slope) + dturbulenceDamping(missing));
+    frequency *= 2.0;
+    amplitude *= 0.5;
+  }
+  return sum;
+}
+#endif  // RAYTEX_FILTER_BOX
 
 #endif  // RAYTEX_NOISE_GLSL
