@@ -135,15 +135,18 @@ ReferenceImage renderReference(const Scene& scene, int width, int height, int sa
   return out;
 }
 
-double rmseAgainstReference(const float* rgba, const ReferenceImage& ref) {
+double rmseAgainstReference(const float* rgba, const ReferenceImage& ref, const std::vector<bool>* mask) {
   double sum = 0.0;
-  size_t n = size_t(ref.width) * ref.height;
-  for (size_t i = 0; i < n; ++i)
+  size_t count = 0;
+  for (size_t i = 0; i < size_t(ref.width) * ref.height; ++i) {
+    if (mask && !(*mask)[i]) continue;
+    ++count;
     for (int c = 0; c < 3; ++c) {
       double d = double(rgba[i * 4 + c]) - ref.rgb[i * 3 + c];
       sum += d * d;
     }
-  return n ? std::sqrt(sum / double(3 * n)) : 0.0;
+  }
+  return count ? std::sqrt(sum / double(3 * count)) : 0.0;
 }
 
 std::vector<float> referenceToRgba(const ReferenceImage& image) {

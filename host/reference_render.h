@@ -34,8 +34,9 @@ ReferenceImage renderReference(const Scene& scene, int width, int height, int sa
                                int threads = 0);
 
 // Root-mean-square difference of the RGB channels of linear RGBA floats (a GPU image) from
-// the reference, over every pixel.
-double rmseAgainstReference(const float* rgba, const ReferenceImage& reference);
+// the reference, over every pixel, or over the pixels flagged in `mask` (0 if none are).
+double rmseAgainstReference(const float* rgba, const ReferenceImage& reference,
+                            const std::vector<bool>* mask = nullptr);
 
 // Linear RGBA floats (alpha 1) for encodeSrgb.
 std::vector<float> referenceToRgba(const ReferenceImage& image);

@@ -114,20 +114,6 @@ size_t count(const std::vector<bool>& mask) {
   return n;
 }
 
-// RMSE of the RGB channels over the pixels in `mask`, linear values.
-double rmse(const std::vector<float>& gpu, const ReferenceImage& ref, const std::vector<bool>& mask) {
-  double sum = 0.0;
-  size_t n = 0;
-  for (size_t i = 0; i < mask.size(); ++i) {
-    if (!mask[i]) continue;
-    ++n;
-    for (int c = 0; c < 3; ++c) {
-      double d = double(gpu[i * 4 + c]) - ref.rgb[i * 3 + c];
-      sum += d * d;
-    }
-  }
-  return n ? std::sqrt(sum / double(3 * n)) : 0.0;
-}
 
 double meanOf(const std::vector<float>& gpu, const std::vector<bool>& mask) {
   double sum = 0.0;
@@ -259,8 +245,8 @@ TEST_P(NoiseFilterTest, BoxBeatsPointAtTheHorizonAndKeepsTheNearRegion) {
   writeImage(std::string("filter_") + kind.name + "_box", box);
   writeImage(std::string("filter_") + kind.name + "_reference", referenceToRgba(ref));
 
-  const double bandPoint = rmse(point, ref, band), bandBox = rmse(box, ref, band);
-  const double nearPoint = rmse(point, ref, near), nearBox = rmse(box, ref, near);
+  const double bandPoint = rmseAgainstReference((point).data(), ref, &band), bandBox = rmseAgainstReference((box).data(), ref, &band);
+  const double nearPoint = rmseAgainstReference((point).data(), ref, &near), nearBox = rmseAgainstReference((box).data(), ref, &near);
   RecordProperty("band_near_pixels", std::to_string(count(band)) + " " + std::to_string(count(near)));
   RecordProperty("band_rmse_point_box", fmt(bandPoint) + " " + fmt(bandBox));
   RecordProperty("near_rmse_point_box", fmt(nearPoint) + " " + fmt(nearBox));

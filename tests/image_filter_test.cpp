@@ -65,20 +65,6 @@ std::vector<bool> interiorMask(const Scene& scene, int w, int h, int kind) {
   return mask;
 }
 
-// RMSE of the linear RGB channels over the masked pixels.
-double rmse(const std::vector<float>& gpu, const ReferenceImage& ref, const std::vector<bool>& mask) {
-  double sum = 0.0;
-  size_t count = 0;
-  for (size_t i = 0; i < mask.size(); ++i) {
-    if (!mask[i]) continue;
-    ++count;
-    for (int c = 0; c < 3; ++c) {
-      double d = double(gpu[i * 4 + c]) - ref.rgb[i * 3 + c];
-      sum += d * d;
-    }
-  }
-  return count ? std::sqrt(sum / double(3 * count)) : 0.0;
-}
 
 size_t countMask(const std::vector<bool>& mask) { return size_t(std::count(mask.begin(), mask.end(), true)); }
 
@@ -129,8 +115,8 @@ TEST_F(ImageFilterTest, MinifiedImagesBeatPointSampling) {
     std::vector<float> box1 = render(c.scene, c.w, c.h, OUTPUT_SHADED, 1, FILTER_BOX);
     std::vector<float> box4 = render(c.scene, c.w, c.h, OUTPUT_SHADED, 2, FILTER_BOX);
     for (const auto* img : {&point1, &point16, &box1, &box4}) EXPECT_EQ(countNonFinite(*img), 0u);
-    double ePoint1 = rmse(point1, ref, mask), ePoint16 = rmse(point16, ref, mask);
-    double eBox1 = rmse(box1, ref, mask), eBox4 = rmse(box4, ref, mask);
+    double ePoint1 = rmseAgainstReference((point1).data(), ref, &mask), ePoint16 = rmseAgainstReference((point16).data(), ref, &mask);
+    double eBox1 = rmseAgainstReference((box1).data(), ref, &mask), eBox4 = rmseAgainstReference((box4).data(), ref, &mask);
     std::string numbers = fmt(ePoint1) + " " + fmt(ePoint16) + " " + fmt(eBox1) + " " + fmt(eBox4);
     RecordProperty(std::string(c.name) + "_rmse_point1_point16_box1_box4", numbers);
     printf("[minify] %-20s rmse point1 %s point16 %s box1 %s box4 %s (%zu px)\n", c.name, fmt(ePoint1).c_str(),
@@ -208,7 +194,7 @@ TEST_F(ImageFilterTest, SphereSeamHasNoLine) {
         seamCol[size_t(y) * w + x0] = mask[size_t(y) * w + x0];
         for (int x : {x0 - 3, x0 - 2, x0 - 1, x0 + 1, x0 + 2, x0 + 3}) nearCols[size_t(y) * w + x] = mask[size_t(y) * w + x];
       }
-      double eSeam = rmse(*img, ref, seamCol), eNear = rmse(*img, ref, nearCols);
+      double eSeam = rmseAgainstReference((*img).data(), ref, &seamCol), eNear = rmseAgainstReference((*img).data(), ref, &nearCols);
       const char* name = img == &box1 ? "box1" : "box4";
       printf("[seam] %-12s %s: seam %s local %s (reference: seam %s local %s); rmse seam column %s, nearby %s\n",
              image, name, fmt(s.seam).c_str(), fmt(s.local).c_str(), fmt(sRef.seam).c_str(), fmt(sRef.local).c_str(),
