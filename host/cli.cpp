@@ -24,6 +24,7 @@ bool parseUint(const std::string& flag, const std::string& text, uint32_t lo, ui
 const char* usageText() {
   return "usage: raytex render SCENE [-o out.png] [--width W] [--height H] [--spp N]\n"
          "                    [--filter point|box] [--reference] [--device N] [--stats] [--validate]\n"
+         "       raytex view SCENE [-o shot.png] [--width W] [--height H] [--device N] [--validate]\n"
          "       raytex devices\n"
          "       raytex --help | --version\n"
          "\n"
@@ -40,6 +41,10 @@ const char* usageText() {
          "                     else the CPU driver lavapipe)\n"
          "  --stats            print one line of phase times in milliseconds\n"
          "  --validate         enable Vulkan validation layers (also RAYTEX_VALIDATION=1)\n"
+         "view     Show SCENE in a window, rendered by the same kernel; the keys:\n"
+         "          1-8 put a course material on the sphere (aSolidChecker, aNoise, aMarble, aWood,\n"
+         "          anImage, aTurbulence, aDturbulence, aChecker), P the next on the plane,\n"
+         "          S writes the frame to -o FILE (default out.png), as render would; Esc quits\n"
          "devices  List the Vulkan devices and their indices.\n"
          "\n"
          "Exit codes: 0 success, 1 runtime failure (Vulkan, output file), 2 bad input (usage, scene).\n"
@@ -69,11 +74,11 @@ bool parseCli(const std::vector<std::string>& args, CliArgs* out, std::string* e
     }
     return true;
   }
-  if (command != "render") {
+  if (command != "render" && command != "view") {
     *error = "unknown command '" + command + "' (try raytex --help)";
     return false;
   }
-  out->command = CliCommand::Render;
+  out->command = command == "view" ? CliCommand::View : CliCommand::Render;
   RenderOptions& r = out->render;
   for (size_t i = 1; i < args.size(); ++i) {
     const std::string& a = args[i];

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-enum class CliCommand { Help, Version, Render, Devices };
+enum class CliCommand { Help, Version, Render, View, Devices };
 
 struct RenderOptions {
   std::string scene;

@@ -54,13 +54,14 @@ const char* typeName(VkPhysicalDeviceType type) {
   }
 }
 
-bool computeQueueFamily(VkPhysicalDevice physical, uint32_t* family) {
+// A family with compute (and, for a window, present) support.
+bool computeQueueFamily(VkInstance instance, VkPhysicalDevice physical, PresentSupport present, uint32_t* family) {
   uint32_t count = 0;
   vkGetPhysicalDeviceQueueFamilyProperties(physical, &count, nullptr);
   std::vector<VkQueueFamilyProperties> families(count);
   vkGetPhysicalDeviceQueueFamilyProperties(physical, &count, families.data());
   for (uint32_t i = 0; i < count; ++i) {
-    if (families[i].queueFlags & VK_QUEUE_COMPUTE_BIT) {
+    if ((families[i].queueFlags & VK_QUEUE_COMPUTE_BIT) && (!present || present(instance, physical, i))) {
       *family = i;
       return true;
     }
@@ -68,20 +69,21 @@ bool computeQueueFamily(VkPhysicalDevice physical, uint32_t* family) {
   return false;
 }
 
-VkInstance createInstance(bool validation) {
+VkInstance createInstance(bool validation, const std::vector<const char*>& windowExtensions = {}) {
   VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
   app.pApplicationName = "raytex";
   app.apiVersion = VK_API_VERSION_1_2;
 
-  const char* extensions[] = {VK_EXT_DEBUG_UTILS_EXTENSION_NAME};
+  std::vector<const char*> extensions = windowExtensions;
+  if (validation) extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
   VkInstanceCreateInfo info{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
   info.pApplicationInfo = &app;
   if (validation) {
     info.enabledLayerCount = 1;
     info.ppEnabledLayerNames = &kValidationLayer;
-    info.enabledExtensionCount = 1;
-    info.ppEnabledExtensionNames = extensions;
   }
+  info.enabledExtensionCount = uint32_t(extensions.size());
+  info.ppEnabledExtensionNames = extensions.data();
   VkInstance instance = VK_NULL_HANDLE;
   VkResult result = vkCreateInstance(&info, nullptr, &instance);
   if (result == VK_ERROR_INCOMPATIBLE_DRIVER) throw VulkanError(kNoDeviceHint);
@@ -136,7 +138,7 @@ void createDevice(Device& d, const DeviceOptions& options) {
   if (options.validation && !d.validation)
     fprintf(stderr, "warning: %s is not installed (apt-get install vulkan-validationlayers)\n",
             kValidationLayer);
-  d.instance = createInstance(d.validation);
+  d.instance = createInstance(d.validation, options.instanceExtensions);
 
   if (d.validation) {
     VkDebugUtilsMessengerCreateInfoEXT info{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
@@ -158,15 +160,16 @@ void createDevice(Device& d, const DeviceOptions& options) {
       throw VulkanError("--device " + std::to_string(options.deviceIndex) + ": only " +
                         std::to_string(devices.size()) + " Vulkan device(s):\n" + listDevices());
     d.physical = devices[options.deviceIndex];
-    if (!computeQueueFamily(d.physical, &d.queueFamily))
-      throw VulkanError("--device " + std::to_string(options.deviceIndex) + " has no compute queue");
+    if (!computeQueueFamily(d.instance, d.physical, options.presentSupport, &d.queueFamily))
+      throw VulkanError("--device " + std::to_string(options.deviceIndex) + " has no compute queue" +
+                        (options.presentSupport ? " that can present to this display" : ""));
   } else {
     int bestRank = -1;
     for (VkPhysicalDevice candidate : devices) {
       VkPhysicalDeviceProperties props;
       vkGetPhysicalDeviceProperties(candidate, &props);
       uint32_t family = 0;
-      if (!computeQueueFamily(candidate, &family)) continue;
+      if (!computeQueueFamily(d.instance, candidate, options.presentSupport, &family)) continue;
       if (typeRank(props.deviceType) > bestRank) {
         bestRank = typeRank(props.deviceType);
         d.physical = candidate;
@@ -183,9 +186,14 @@ void createDevice(Device& d, const DeviceOptions& options) {
   queueInfo.queueFamilyIndex = d.queueFamily;
   queueInfo.queueCount = 1;
   queueInfo.pQueuePriorities = &priority;
+  const char* swapchainExtension = VK_KHR_SWAPCHAIN_EXTENSION_NAME;
   VkDeviceCreateInfo deviceInfo{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
   deviceInfo.queueCreateInfoCount = 1;
   deviceInfo.pQueueCreateInfos = &queueInfo;
+  if (options.presentSupport) {
+    deviceInfo.enabledExtensionCount = 1;
+    deviceInfo.ppEnabledExtensionNames = &swapchainExtension;
+  }
   VK_CHECK(vkCreateDevice(d.physical, &deviceInfo, nullptr, &d.device));
   vkGetDeviceQueue(d.device, d.queueFamily, 0, &d.queue);
 

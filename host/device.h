@@ -5,6 +5,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 // A Vulkan call failed: a runtime failure (exit code 1), never an abort.
 struct VulkanError : std::runtime_error {
@@ -21,9 +22,16 @@ const char* vkResultName(VkResult result);
       throwVkError(#call, vkCheckResult_, __FILE__, __LINE__);            \
   } while (0)
 
+// Whether a queue family of a device can present to the window system (a window's need).
+using PresentSupport = bool (*)(VkInstance, VkPhysicalDevice, uint32_t queueFamily);
+
 struct DeviceOptions {
   int deviceIndex = -1;     // -1: best available (discrete > integrated > virtual > CPU)
   bool validation = false;  // enable VK_LAYER_KHRONOS_validation if installed
+  // For a window: the instance extensions the window system needs, and its present test;
+  // with presentSupport set, the queue must also present and VK_KHR_swapchain is enabled.
+  std::vector<const char*> instanceExtensions;
+  PresentSupport presentSupport = nullptr;
 };
 
 struct Device {

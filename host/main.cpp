@@ -5,6 +5,7 @@
 #include "parser.h"
 #include "reference_render.h"
 #include "renderer.h"
+#include "viewer.h"
 
 #include <chrono>
 #include <cmath>
@@ -158,6 +159,8 @@ int main(int argc, char** argv) {
       return 0;
     case CliCommand::Render:
       return runRender(cli.render);
+    case CliCommand::View:
+      return runViewer(cli.render);
   }
   return 1;
 }

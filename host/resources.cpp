@@ -130,7 +130,8 @@ VkCommandBuffer beginCommands(const Device& device) {
   return cmd;
 }
 
-void submitAndWait(const Device& device, VkCommandBuffer cmd) {
+void submitAndWait(const Device& device, VkCommandBuffer cmd, VkSemaphore wait, VkPipelineStageFlags waitStage,
+                   VkSemaphore signal) {
   VK_CHECK(vkEndCommandBuffer(cmd));
   VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
   VkFence fence = VK_NULL_HANDLE;
@@ -138,6 +139,15 @@ void submitAndWait(const Device& device, VkCommandBuffer cmd) {
   VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
   submit.commandBufferCount = 1;
   submit.pCommandBuffers = &cmd;
+  if (wait) {
+    submit.waitSemaphoreCount = 1;
+    submit.pWaitSemaphores = &wait;
+    submit.pWaitDstStageMask = &waitStage;
+  }
+  if (signal) {
+    submit.signalSemaphoreCount = 1;
+    submit.pSignalSemaphores = &signal;
+  }
   VkResult result = vkQueueSubmit(device.queue, 1, &submit, fence);
   if (result == VK_SUCCESS) result = vkWaitForFences(device.device, 1, &fence, VK_TRUE, UINT64_MAX);
   vkDestroyFence(device.device, fence, nullptr);

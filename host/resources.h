@@ -41,8 +41,10 @@ void imageBarrier(VkCommandBuffer cmd, VkImage image, VkImageLayout from, VkImag
 
 // Allocates a primary command buffer and begins it for one submission.
 VkCommandBuffer beginCommands(const Device& device);
-// Ends, submits, waits on a fence and frees the command buffer.
-void submitAndWait(const Device& device, VkCommandBuffer cmd);
+// Ends, submits, waits on a fence and frees the command buffer. Optionally the submission
+// waits for `wait` at `waitStage` and signals `signal` (swapchain presentation).
+void submitAndWait(const Device& device, VkCommandBuffer cmd, VkSemaphore wait = VK_NULL_HANDLE,
+                   VkPipelineStageFlags waitStage = 0, VkSemaphore signal = VK_NULL_HANDLE);
 
 // Uploads tightly packed RGBA8 texels into every layer and mip level of `image` (layout ends
 // SHADER_READ_ONLY_OPTIMAL): level 0 of every layer (layer after layer), then level 1, and so on.

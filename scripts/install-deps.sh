@@ -9,5 +9,6 @@ $SUDO apt-get update -qq
 $SUDO apt-get install -y -qq --no-install-recommends \
   build-essential cmake ninja-build pkg-config \
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers glslang-tools \
-  libglm-dev libstb-dev libgtest-dev >/dev/null
+  libglm-dev libglfw3-dev libstb-dev libgtest-dev \
+  xvfb xdotool >/dev/null  # the viewer's test runs under a virtual X display
 echo "raytex dependencies installed"

@@ -1,0 +1,172 @@
+#include "window.h"
+
+#define GLFW_INCLUDE_VULKAN
+#include <GLFW/glfw3.h>
+
+#include <algorithm>
+
+namespace {
+
+void destroySwapchain(Window& w, const Device& d) {
+  if (w.swapchain) vkDestroySwapchainKHR(d.device, w.swapchain, nullptr);
+  w.swapchain = VK_NULL_HANDLE;
+  w.images.clear();
+}
+
+// An sRGB swapchain format that can be a blit destination: the blit from the linear float
+// image then encodes sRGB like the PNG output does.
+VkSurfaceFormatKHR chooseFormat(const Device& d, VkSurfaceKHR surface) {
+  uint32_t count = 0;
+  VK_CHECK(vkGetPhysicalDeviceSurfaceFormatsKHR(d.physical, surface, &count, nullptr));
+  std::vector<VkSurfaceFormatKHR> formats(count);
+  VK_CHECK(vkGetPhysicalDeviceSurfaceFormatsKHR(d.physical, surface, &count, formats.data()));
+  auto blitDst = [&](VkFormat f) {
+    VkFormatProperties props;
+    vkGetPhysicalDeviceFormatProperties(d.physical, f, &props);
+    return (props.optimalTilingFeatures & VK_FORMAT_FEATURE_BLIT_DST_BIT) != 0;
+  };
+  for (const VkSurfaceFormatKHR& f : formats)
+    if ((f.format == VK_FORMAT_B8G8R8A8_SRGB || f.format == VK_FORMAT_R8G8B8A8_SRGB) && blitDst(f.format)) return f;
+  for (const VkSurfaceFormatKHR& f : formats)
+    if (blitDst(f.format)) return f;
+  throw VulkanError("the display offers no swapchain format that can be a blit destination");
+}
+
+}  // namespace
+
+bool initWindowSystem(std::string* error) {
+  if (!glfwInit()) {
+    *error = "no display to open a window on (is DISPLAY set?); render to a file instead: "
+             "raytex render SCENE -o out.png";
+    return false;
+  }
+  if (!glfwVulkanSupported()) {
+    glfwTerminate();
+    *error = "GLFW found no Vulkan loader; install libvulkan1, or use raytex render SCENE -o out.png";
+    return false;
+  }
+  return true;
+}
+
+void shutdownWindowSystem() { glfwTerminate(); }
+
+std::vector<const char*> windowInstanceExtensions() {
+  uint32_t count = 0;
+  const char** names = glfwGetRequiredInstanceExtensions(&count);
+  return std::vector<const char*>(names, names + count);
+}
+
+bool windowPresentSupport(VkInstance instance, VkPhysicalDevice physical, uint32_t queueFamily) {
+  return glfwGetPhysicalDevicePresentationSupport(instance, physical, queueFamily) == GLFW_TRUE;
+}
+
+GLFWwindow* openWindow(int width, int height, const std::string& title) {
+  glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);
+  GLFWwindow* window = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
+  if (!window) throw VulkanError("cannot open a window");
+  return window;
+}
+
+VkExtent2D framebufferSize(const Window& w) {
+  int width = 0, height = 0;
+  glfwGetFramebufferSize(w.window, &width, &height);
+  return {uint32_t(std::max(width, 0)), uint32_t(std::max(height, 0))};
+}
+
+void createSwapchain(Window& w, const Device& d) {
+  VK_CHECK(vkDeviceWaitIdle(d.device));
+  if (!w.surface) {
+    VK_CHECK(glfwCreateWindowSurface(d.instance, w.window, nullptr, &w.surface));
+    VkSemaphoreCreateInfo semaphoreInfo{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
+    VK_CHECK(vkCreateSemaphore(d.device, &semaphoreInfo, nullptr, &w.acquired));
+    VK_CHECK(vkCreateSemaphore(d.device, &semaphoreInfo, nullptr, &w.presentReady));
+  }
+  VkBool32 supported = VK_FALSE;
+  VK_CHECK(vkGetPhysicalDeviceSurfaceSupportKHR(d.physical, d.queueFamily, w.surface, &supported));
+  if (!supported) throw VulkanError("the Vulkan queue cannot present to this window");
+
+  VkSurfaceCapabilitiesKHR caps;
+  VK_CHECK(vkGetPhysicalDeviceSurfaceCapabilitiesKHR(d.physical, w.surface, &caps));
+  VkSurfaceFormatKHR format = chooseFormat(d, w.surface);
+  VkExtent2D extent = caps.currentExtent;
+  if (extent.width == UINT32_MAX) extent = framebufferSize(w);
+  extent.width = std::clamp(extent.width, caps.minImageExtent.width, caps.maxImageExtent.width);
+  extent.height = std::clamp(extent.height, caps.minImageExtent.height, caps.maxImageExtent.height);
+
+  VkSwapchainCreateInfoKHR info{VK_STRUCTURE_TYPE_SWAPCHAIN_CREATE_INFO_KHR};
+  info.surface = w.surface;
+  info.minImageCount = std::max(caps.minImageCount, 2u);
+  if (caps.maxImageCount > 0) info.minImageCount = std::min(info.minImageCount, caps.maxImageCount);
+  info.imageFormat = format.format;
+  info.imageColorSpace = format.colorSpace;
+  info.imageExtent = extent;
+  info.imageArrayLayers = 1;
+  info.imageUsage = VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+  info.imageSharingMode = VK_SHARING_MODE_EXCLUSIVE;
+  info.preTransform = caps.currentTransform;
+  info.compositeAlpha = VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR;
+  info.presentMode = VK_PRESENT_MODE_FIFO_KHR;  // always available
+  info.clipped = VK_TRUE;
+  info.oldSwapchain = w.swapchain;
+  VkSwapchainKHR swapchain = VK_NULL_HANDLE;
+  VK_CHECK(vkCreateSwapchainKHR(d.device, &info, nullptr, &swapchain));
+  destroySwapchain(w, d);
+  w.swapchain = swapchain;
+  w.format = format.format;
+  w.extent = extent;
+  uint32_t count = 0;
+  VK_CHECK(vkGetSwapchainImagesKHR(d.device, w.swapchain, &count, nullptr));
+  w.images.resize(count);
+  VK_CHECK(vkGetSwapchainImagesKHR(d.device, w.swapchain, &count, w.images.data()));
+}
+
+void destroyWindow(Window& w, const Device& d) {
+  if (d.device) {
+    vkDeviceWaitIdle(d.device);
+    destroySwapchain(w, d);
+    if (w.acquired) vkDestroySemaphore(d.device, w.acquired, nullptr);
+    if (w.presentReady) vkDestroySemaphore(d.device, w.presentReady, nullptr);
+  }
+  if (w.surface) vkDestroySurfaceKHR(d.instance, w.surface, nullptr);
+  if (w.window) glfwDestroyWindow(w.window);
+  w = Window{};
+}
+
+bool presentImage(Window& w, const Device& d, const Image& image) {
+  uint32_t index = 0;
+  VkResult result = vkAcquireNextImageKHR(d.device, w.swapchain, UINT64_MAX, w.acquired, VK_NULL_HANDLE, &index);
+  if (result == VK_ERROR_OUT_OF_DATE_KHR) return false;
+  if (result != VK_SUBOPTIMAL_KHR) VK_CHECK(result);
+
+  VkCommandBuffer cmd = beginCommands(d);
+  VkImage target = w.images[index];
+  imageBarrier(cmd, target, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 0,
+               VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT);
+  imageBarrier(cmd, image.image, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+               VK_ACCESS_SHADER_WRITE_BIT, VK_ACCESS_TRANSFER_READ_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+               VK_PIPELINE_STAGE_TRANSFER_BIT);
+  VkImageBlit blit{};
+  blit.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+  blit.srcOffsets[1] = {int32_t(image.width), int32_t(image.height), 1};
+  blit.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+  blit.dstOffsets[1] = {int32_t(w.extent.width), int32_t(w.extent.height), 1};
+  vkCmdBlitImage(cmd, image.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, target,
+                 VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &blit, VK_FILTER_NEAREST);
+  imageBarrier(cmd, target, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR,
+               VK_ACCESS_TRANSFER_WRITE_BIT, 0, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT);
+  imageBarrier(cmd, image.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_GENERAL,
+               VK_ACCESS_TRANSFER_READ_BIT, VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
+               VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
+  submitAndWait(d, cmd, w.acquired, VK_PIPELINE_STAGE_TRANSFER_BIT, w.presentReady);
+
+  VkPresentInfoKHR present{VK_STRUCTURE_TYPE_PRESENT_INFO_KHR};
+  present.waitSemaphoreCount = 1;
+  present.pWaitSemaphores = &w.presentReady;
+  present.swapchainCount = 1;
+  present.pSwapchains = &w.swapchain;
+  present.pImageIndices = &index;
+  result = vkQueuePresentKHR(d.queue, &present);
+  if (result == VK_ERROR_OUT_OF_DATE_KHR || result == VK_SUBOPTIMAL_KHR) return false;
+  VK_CHECK(result);
+  return true;
+}

@@ -1,0 +1,43 @@
+// A GLFW window with a Vulkan swapchain. The kernel's image is blitted into it: no
+// graphics pipeline. GLFW 3.3 API only.
+#pragma once
+
+#include "device.h"
+#include "resources.h"
+
+#include <string>
+#include <vector>
+
+struct GLFWwindow;
+
+struct Window {
+  GLFWwindow* window = nullptr;
+  VkSurfaceKHR surface = VK_NULL_HANDLE;
+  VkSwapchainKHR swapchain = VK_NULL_HANDLE;
+  VkFormat format = VK_FORMAT_UNDEFINED;
+  VkExtent2D extent{0, 0};
+  std::vector<VkImage> images;
+  VkSemaphore acquired = VK_NULL_HANDLE;      // the swapchain image is ready to be written
+  VkSemaphore presentReady = VK_NULL_HANDLE;  // the blit is done
+};
+
+// Starts GLFW; false with *error set when there is no display to open a window on.
+bool initWindowSystem(std::string* error);
+void shutdownWindowSystem();
+
+// What the Vulkan instance and device need for windows (pass to DeviceOptions).
+std::vector<const char*> windowInstanceExtensions();
+bool windowPresentSupport(VkInstance instance, VkPhysicalDevice physical, uint32_t queueFamily);
+
+// Opens the window (not yet visible to Vulkan); then createSwapchain once the device exists.
+GLFWwindow* openWindow(int width, int height, const std::string& title);
+void createSwapchain(Window& window, const Device& device);
+void destroyWindow(Window& window, const Device& device);
+
+// The framebuffer size in pixels (0 x 0 while minimised).
+VkExtent2D framebufferSize(const Window& window);
+
+// Blits `image` (rgba32f, GENERAL layout) to the next swapchain image, scaled to it, and
+// presents. Returns false when the swapchain no longer matches the window (resize): call
+// createSwapchain again.
+bool presentImage(Window& window, const Device& device, const Image& image);

@@ -1,0 +1,73 @@
+#!/usr/bin/env bash
+# The viewer under Xvfb (a virtual X display) with lavapipe: keys switch the sphere's and
+# the plane's materials (read back from the window title), and the screenshot key writes
+# the same PNG as raytex render for the same scene and size.
+# Usage: viewer_test.sh RAYTEX SOURCE_DIR
+set -u
+raytex=$1
+src=$2
+for tool in Xvfb xdotool; do
+  command -v $tool >/dev/null || { echo "FAIL: $tool not installed (apt-get install xvfb xdotool)"; exit 1; }
+done
+tmp=$(mktemp -d)
+display=""
+for n in $(seq 90 120); do [ -e /tmp/.X11-unix/X$n ] || { display=":$n"; break; }; done
+Xvfb "$display" -screen 0 800x600x24 >/dev/null 2>&1 &
+xvfb=$!
+viewer=""
+cleanup() {
+  [ -n "$viewer" ] && kill "$viewer" 2>/dev/null
+  kill "$xvfb" 2>/dev/null
+  rm -rf "$tmp"
+}
+trap cleanup EXIT
+export DISPLAY=$display
+passed=0
+failed=0
+check() {  # check NAME CONDITION...
+  local name=$1
+  shift
+  if "$@"; then passed=$((passed + 1)); else failed=$((failed + 1)); echo "FAIL $name"; fi
+}
+for _ in $(seq 50); do xdotool getdisplaygeometry >/dev/null 2>&1 && break; sleep 0.1; done
+
+"$raytex" view "$src/scenes/textures.cfg" -o "$tmp/shot.png" --width 320 --height 240 --validate \
+  >"$tmp/view.log" 2>&1 &
+viewer=$!
+wid=""
+for _ in $(seq 100); do wid=$(xdotool search --name '^raytex' 2>/dev/null | head -1); [ -n "$wid" ] && break; sleep 0.1; done
+check window-opens test -n "$wid"
+title() { xdotool getwindowname "$wid"; }
+waitTitle() {  # waitTitle PATTERN: the title matches within 10 s
+  for _ in $(seq 100); do title | grep -q -- "$1" && return 0; sleep 0.1; done
+  echo "title: $(title)"
+  return 1
+}
+check initial-materials waitTitle 'sphere: aSolidChecker | plane: aChecker'
+xdotool key --window "$wid" 3
+check key-3-marble waitTitle 'sphere: aMarble'
+xdotool key --window "$wid" p
+check key-p-plane waitTitle 'plane: aSolidChecker'
+xdotool key --window "$wid" p
+check key-p-cycles waitTitle 'plane: aNoise'
+xdotool key --window "$wid" 5
+check key-5-image waitTitle 'sphere: anImage | plane: aNoise'
+xdotool key --window "$wid" s
+check screenshot waitTitle "wrote $tmp/shot.png"
+xdotool key --window "$wid" Escape
+for _ in $(seq 100); do kill -0 "$viewer" 2>/dev/null || break; sleep 0.1; done
+wait "$viewer"
+rc=$?
+viewer=""
+check clean-exit test "$rc" -eq 0
+check no-validation-errors test "$(grep -c 'validation error' "$tmp/view.log")" -eq 0
+
+# The same view headless: the sphere and plane materials switched in the scene file.
+sed -e 's|^    aSolidChecker;|    // aSolidChecker;|' -e 's|^    // anImage;|    anImage;|' \
+  -e 's|^    aChecker;|    aNoise;|' "$src/scenes/textures.cfg" >"$src/scenes/.viewer-test.cfg"
+"$raytex" render "$src/scenes/.viewer-test.cfg" -o "$tmp/render.png" --width 320 --height 240
+rm -f "$src/scenes/.viewer-test.cfg"
+check screenshot-equals-render cmp -s "$tmp/shot.png" "$tmp/render.png"
+
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]
