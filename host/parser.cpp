@@ -478,6 +478,7 @@ class Parser {
     }
     std::string text;
     if (!readFile(path, &text)) fail(directive.loc, "cannot open included file '" + path + "'");
+    st_.scene.files.push_back(path);
     parseText(st_, text, path);
   }
 
@@ -506,5 +507,7 @@ Scene parseSceneText(const std::string& text, const std::string& fileName) {
 Scene parseSceneFile(const std::string& path) {
   std::string text;
   if (!readFile(path, &text)) throw SceneError(FileLoc{path, 0, 0}, "cannot open scene file '" + path + "'");
-  return parseSceneText(text, path);
+  Scene scene = parseSceneText(text, path);
+  scene.files.insert(scene.files.begin(), path);
+  return scene;
 }

@@ -99,7 +99,8 @@ struct RenderSettings {
 };
 
 struct Scene {
-  std::string path;  // the top-level scene file
+  std::string path;                // the top-level scene file
+  std::vector<std::string> files;  // every file read: path, then its #includes (for reloading)
   RenderSettings render;
   Camera camera;
   std::vector<Light> lights;

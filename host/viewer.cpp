@@ -10,7 +10,9 @@
 
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <string>
+#include <vector>
 
 namespace {
 
@@ -67,6 +69,35 @@ void onKey(GLFWwindow* window, int key, int, int action, int) {
   }
 }
 
+// Modification times of the scene's files (an unreadable file counts as changed).
+std::vector<std::filesystem::file_time_type> fileTimes(const Scene& scene) {
+  std::vector<std::filesystem::file_time_type> times;
+  for (const std::string& f : scene.files) {
+    std::error_code ec;
+    times.push_back(std::filesystem::last_write_time(f, ec));
+  }
+  return times;
+}
+
+// Re-parses the scene when one of its files changed. A parse error is printed with its
+// file:line:col and the last good scene stays.
+void reloadIfChanged(ViewerState& state, const std::string& path,
+                     std::vector<std::filesystem::file_time_type>& times) {
+  std::vector<std::filesystem::file_time_type> now = fileTimes(state.scene);
+  if (now == times) return;
+  times = now;
+  try {
+    Scene scene = parseSceneFile(path);
+    times = fileTimes(scene);
+    state.scene = std::move(scene);
+    state.dirty = true;
+    state.message = "reloaded";
+  } catch (const SceneError& e) {
+    fprintf(stderr, "%s\n", e.what());
+    state.message = "scene error, see the terminal";
+  }
+}
+
 std::string title(const ViewerState& state, double frameMs) {
   std::string t = "raytex";
   if (!state.scene.spheres.empty()) t += " | sphere: " + materialName(state.scene, state.scene.spheres[0].material);
@@ -115,6 +146,7 @@ int runViewer(const RenderOptions& options) {
 
     uint32_t textureKinds = 0;
     auto lastTitle = std::chrono::steady_clock::now() - std::chrono::seconds(1);
+    std::vector<std::filesystem::file_time_type> times = fileTimes(state.scene);
     while (!glfwWindowShouldClose(window.window)) {
       glfwPollEvents();
       VkExtent2D size = framebufferSize(window);
@@ -142,7 +174,8 @@ int runViewer(const RenderOptions& options) {
       }
       if (!presentImage(window, renderer.device, renderer.output)) createSwapchain(window, renderer.device);
       auto now = std::chrono::steady_clock::now();
-      if (now - lastTitle > std::chrono::milliseconds(250)) {
+      if (now - lastTitle > std::chrono::milliseconds(250)) {  // also the reload poll
+        reloadIfChanged(state, options.scene, times);
         glfwSetWindowTitle(window.window, title(state, renderer.lastFrameMs).c_str());
         lastTitle = now;
       }

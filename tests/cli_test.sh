@@ -57,6 +57,10 @@ check png-signature test "$(head -c 8 "$tmp/ok.png" | od -An -tx1 | tr -d ' \n')
 check png-size test "$(od -An -tu1 -j16 -N8 "$tmp/ok.png" | tr -s ' ')" = " 0 0 0 64 0 0 0 48"
 check no-temp-files test "$(ls "$tmp" | grep -c tmp-)" -eq 0
 
+# No display: the viewer says to render to a file instead, exit 1.
+expect view-no-display 1 'no display.*raytex render' -- env -u DISPLAY -u WAYLAND_DISPLAY "$raytex" view \
+  "$src/scenes/textures.cfg"
+
 # The scene's render block sets size, samples and filter; flags override it.
 sed 's|^camera {|render { width = 40; height = 30; spp = 4; filter = box; }\ncamera {|' \
   "$src/scenes/textures.cfg" >"$src/scenes/.cli-test-render.cfg"

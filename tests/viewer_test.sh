@@ -69,5 +69,29 @@ sed -e 's|^    aSolidChecker;|    // aSolidChecker;|' -e 's|^    // anImage;|   
 rm -f "$src/scenes/.viewer-test.cfg"
 check screenshot-equals-render cmp -s "$tmp/shot.png" "$tmp/render.png"
 
+# Hot reload: saving the scene file updates the window; a parse error is printed with its
+# file:line:col and the last good scene stays.
+mkdir -p "$tmp/scenes"
+cp "$src/scenes/textures.cfg" "$src/scenes/texture_include.cfg" "$tmp/scenes/"
+ln -s "$src/textures" "$tmp/textures"
+"$raytex" view "$tmp/scenes/textures.cfg" --width 160 --height 120 --validate >"$tmp/reload.log" 2>&1 &
+viewer=$!
+wid=""
+for _ in $(seq 100); do wid=$(xdotool search --name '^raytex' 2>/dev/null | head -1); [ -n "$wid" ] && break; sleep 0.1; done
+check reload-window-opens test -n "$wid"
+check reload-initial waitTitle 'sphere: aSolidChecker'
+sed -i -e 's|^    aSolidChecker;|    // aSolidChecker;|' -e 's|^    // aWood;|    aWood;|' "$tmp/scenes/textures.cfg"
+check reload-applies waitTitle 'sphere: aWood .*reloaded'
+sed -i 's|^    radius = 2.0;|    radiuss = 2.0;|' "$tmp/scenes/textures.cfg"
+check reload-error-title waitTitle 'sphere: aWood .*scene error'
+check reload-error-message grep -q "textures.cfg:[0-9]*:5: unknown key 'radiuss' in sphere" "$tmp/reload.log"
+check reload-keeps-running kill -0 "$viewer"
+sed -i 's|^    radiuss = 2.0;|    radius = 2.0;|' "$tmp/scenes/textures.cfg"
+check reload-recovers waitTitle 'sphere: aWood .*reloaded'
+xdotool key --window "$wid" Escape
+wait "$viewer"
+check reload-clean-exit test $? -eq 0
+viewer=""
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]
