@@ -121,12 +121,33 @@ gpu::Plane packPlane(const Plane& p, const TextureDesc& texture, glm::dvec3 eye,
 
 }  // namespace
 
+void packCamera(GpuScene& g, const Scene& scene, uint32_t width, uint32_t height) {
+  gpu::Frame f = cameraFrame(scene.camera, width, height);
+  f.background = v4(scene.background);
+  f.ambientLight = v4(scene.ambientLight);
+  // Camera-relative positions, subtracted in double.
+  Material fallback = defaultMaterial();
+  const glm::dvec3 eye = scene.camera.eye;
+  g.spheres.clear();
+  g.planes.clear();
+  g.lights.clear();
+  for (const Sphere& s : scene.spheres) {
+    gpu::Sphere gs{};
+    gs.centerRadius = glm::vec4(glm::vec3(s.center - eye), float(s.radius));
+    gs.material = g.materialIndex.at(s.material);
+    g.spheres.push_back(gs);
+  }
+  for (const Plane& p : scene.planes)
+    g.planes.push_back(packPlane(p, materialAt(scene, p.material, fallback).texture, eye, g.materialIndex.at(p.material)));
+  for (const Light& l : scene.lights) g.lights.push_back({v4(glm::vec3(l.position - eye)), v4(l.color)});
+  f.sphereCount = uint32_t(g.spheres.size());
+  f.planeCount = uint32_t(g.planes.size());
+  f.lightCount = uint32_t(g.lights.size());
+  g.frame = f;
+}
+
 GpuScene buildGpuScene(const Scene& scene, uint32_t width, uint32_t height) {
   GpuScene g;
-  g.frame = cameraFrame(scene.camera, width, height);
-  g.frame.background = v4(scene.background);
-  g.frame.ambientLight = v4(scene.ambientLight);
-
   // Materials: only the used ones, re-indexed; image files become array layers.
   Material fallback = defaultMaterial();
   std::map<int, uint32_t> materialIndex;
@@ -152,20 +173,8 @@ GpuScene buildGpuScene(const Scene& scene, uint32_t width, uint32_t height) {
     g.textureKinds |= 1u << uint32_t(material.texture.kind);
   }
 
-  // Camera-relative positions, subtracted in double.
-  const glm::dvec3 eye = scene.camera.eye;
-  for (const Sphere& s : scene.spheres) {
-    gpu::Sphere gs{};
-    gs.centerRadius = glm::vec4(glm::vec3(s.center - eye), float(s.radius));
-    gs.material = materialIndex.at(s.material);
-    g.spheres.push_back(gs);
-  }
-  for (const Plane& p : scene.planes)
-    g.planes.push_back(packPlane(p, materialAt(scene, p.material, fallback).texture, eye, materialIndex.at(p.material)));
-  for (const Light& l : scene.lights) g.lights.push_back({v4(glm::vec3(l.position - eye)), v4(l.color)});
-  g.frame.sphereCount = uint32_t(g.spheres.size());
-  g.frame.planeCount = uint32_t(g.planes.size());
-  g.frame.lightCount = uint32_t(g.lights.size());
+  g.materialIndex = materialIndex;
+  packCamera(g, scene, width, height);
 
   if (g.textureKinds & ((1u << TEX_NOISE) | (1u << TEX_MARBLE) | (1u << TEX_WOOD) |
                         (1u << TEX_TURBULENCE) | (1u << TEX_DTURBULENCE)))

@@ -7,6 +7,7 @@
 #include "scene.h"
 
 #include <cstdint>
+#include <map>
 #include <vector>
 
 struct GpuScene {
@@ -17,6 +18,7 @@ struct GpuScene {
   std::vector<gpu::Light> lights;
   gpu::NoiseTable noise{};
   uint32_t textureKinds = 0;  // bit (1 << TEX_*) per kind in use: the specialisation mask
+  std::map<int, uint32_t> materialIndex;  // Scene material (-1: the default) -> index in materials
   // Image textures in use, all resampled to one size: layer i is material imageLayer i.
   int imageWidth = 1, imageHeight = 1, imageLayers = 0;
   std::vector<uint8_t> imagePixels;  // RGBA8 sRGB, layer after layer
@@ -30,6 +32,11 @@ struct GpuScene {
 // Throws SceneError (with the texture's file location) if an image in use cannot be
 // loaded. width, height: output size in pixels.
 GpuScene buildGpuScene(const Scene& scene, uint32_t width, uint32_t height);
+
+// Re-packs what depends on the camera and the output size (the frame, and spheres, planes
+// and lights, which are camera-relative) for a scene whose materials are unchanged: cheap,
+// unlike buildGpuScene, which also decodes images.
+void packCamera(GpuScene& gpuScene, const Scene& scene, uint32_t width, uint32_t height);
 
 // The camera as the kernel sees it (exposed for the CPU reference).
 gpu::Frame cameraFrame(const Camera& camera, uint32_t width, uint32_t height);

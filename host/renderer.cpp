@@ -165,6 +165,14 @@ void uploadScene(Renderer& r, const GpuScene& s) {
   writeDescriptors(r);
 }
 
+void updateSceneBuffers(Renderer& r, const GpuScene& s) {
+  VK_CHECK(vkDeviceWaitIdle(r.device.device));
+  writeBuffer(r.frame, &s.frame, sizeof(s.frame));
+  writeBuffer(r.spheres, s.spheres.data(), sizeof(gpu::Sphere) * s.spheres.size());
+  writeBuffer(r.planes, s.planes.data(), sizeof(gpu::Plane) * s.planes.size());
+  writeBuffer(r.lights, s.lights.data(), sizeof(gpu::Light) * s.lights.size());
+}
+
 void preparePipeline(Renderer& r, const PipelineKey& key) {
   if (r.pipeline && r.pipelineKey == key) return;
   if (r.pipeline) {

@@ -34,6 +34,9 @@ void destroyRenderer(Renderer& renderer);
 // Replaces the scene on the device and the output size (re-creating only what changed size).
 void uploadScene(Renderer& renderer, const GpuScene& scene);
 
+// Rewrites the frame, sphere, plane and light buffers after packCamera (same counts and size).
+void updateSceneBuffers(Renderer& renderer, const GpuScene& scene);
+
 // Creates the pipeline specialised to `key` unless it is the current one.
 void preparePipeline(Renderer& renderer, const PipelineKey& key);
 

@@ -7,8 +7,11 @@
 #include "window.h"
 
 #include <GLFW/glfw3.h>
+#include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -20,9 +23,36 @@ namespace {
 const char* const kCourseMaterials[] = {"aSolidChecker", "aNoise",      "aMarble",      "aWood",
                                         "anImage",       "aTurbulence", "aDturbulence", "aChecker"};
 
+// The camera orbits its lookat point about the scene's up axis: eye = lookat + radius *
+// (cos(elevation) (cos(azimuth) e1 + sin(azimuth) e2) + sin(elevation) up).
+struct Orbit {
+  Camera home;               // the scene file's camera (R returns to it)
+  glm::dvec3 up{0, 1, 0}, e1{1, 0, 0}, e2{0, 0, 1};
+  double radius = 1.0, azimuth = 0.0, elevation = 0.0;
+};
+
+Orbit orbitOf(const Camera& camera) {
+  Orbit o;
+  o.home = camera;
+  o.up = glm::normalize(camera.up);
+  glm::dvec3 offset = camera.eye - camera.lookat;
+  o.radius = glm::length(offset);
+  glm::dvec3 dir = offset / o.radius;
+  o.elevation = std::asin(std::clamp(glm::dot(dir, o.up), -1.0, 1.0));
+  glm::dvec3 flat = dir - o.up * glm::dot(dir, o.up);
+  // The parser rejects an up parallel to the view; fall back to any perpendicular axis.
+  o.e1 = glm::length(flat) > 1e-9 ? glm::normalize(flat) : glm::normalize(glm::cross(o.up, glm::dvec3(1, 0, 0)));
+  o.e2 = glm::cross(o.up, o.e1);
+  return o;
+}
+
 struct ViewerState {
   Scene scene;
+  Orbit orbit;
   bool dirty = true;         // the GPU scene must be rebuilt
+  bool cameraMoved = false;  // only the camera changed: re-pack positions
+  bool dragging = false;
+  double lastX = 0.0, lastY = 0.0;
   bool screenshot = false;   // write the next frame to the output PNG
   int planeMaterial = -1;    // index into kCourseMaterials for P cycling
   std::string message;      // shown in the title (e.g. a material the scene does not define)
@@ -38,9 +68,58 @@ std::string materialName(const Scene& scene, int index) {
   return index < 0 ? std::string("default") : scene.materials[size_t(index)].name;
 }
 
-void onKey(GLFWwindow* window, int key, int, int action, int) {
-  if (action != GLFW_PRESS) return;
+// Moves the camera by angles (radians) and a zoom factor, elevation kept off the poles.
+void moveCamera(ViewerState& state, double dAzimuth, double dElevation, double zoom) {
+  Orbit& o = state.orbit;
+  o.azimuth += dAzimuth;
+  o.elevation = std::clamp(o.elevation + dElevation, -1.55, 1.55);
+  o.radius = std::clamp(o.radius * zoom, 1e-3, 1e7);
+  glm::dvec3 dir = std::cos(o.elevation) * (std::cos(o.azimuth) * o.e1 + std::sin(o.azimuth) * o.e2) +
+                   std::sin(o.elevation) * o.up;
+  state.scene.camera.eye = state.scene.camera.lookat + o.radius * dir;
+  state.cameraMoved = true;
+}
+
+void onMouseButton(GLFWwindow* window, int button, int action, int) {
   auto* state = static_cast<ViewerState*>(glfwGetWindowUserPointer(window));
+  if (button != GLFW_MOUSE_BUTTON_LEFT) return;
+  state->dragging = action == GLFW_PRESS;
+  glfwGetCursorPos(window, &state->lastX, &state->lastY);
+}
+
+void onCursor(GLFWwindow* window, double x, double y) {
+  auto* state = static_cast<ViewerState*>(glfwGetWindowUserPointer(window));
+  if (state->dragging) moveCamera(*state, -(x - state->lastX) * 0.01, (y - state->lastY) * 0.01, 1.0);
+  state->lastX = x;
+  state->lastY = y;
+}
+
+void onScroll(GLFWwindow* window, double, double yOffset) {
+  moveCamera(*static_cast<ViewerState*>(glfwGetWindowUserPointer(window)), 0.0, 0.0, std::pow(0.9, yOffset));
+}
+
+void onKey(GLFWwindow* window, int key, int, int action, int) {
+  if (action != GLFW_PRESS && action != GLFW_REPEAT) return;
+  auto* state = static_cast<ViewerState*>(glfwGetWindowUserPointer(window));
+  const double step = 5.0 * 3.14159265358979 / 180.0;
+  if (key == GLFW_KEY_LEFT || key == GLFW_KEY_A) {
+    moveCamera(*state, -step, 0.0, 1.0);
+  } else if (key == GLFW_KEY_RIGHT || key == GLFW_KEY_D) {
+    moveCamera(*state, step, 0.0, 1.0);
+  } else if (key == GLFW_KEY_UP || key == GLFW_KEY_W) {
+    moveCamera(*state, 0.0, step, 1.0);
+  } else if (key == GLFW_KEY_DOWN || key == GLFW_KEY_S) {
+    moveCamera(*state, 0.0, -step, 1.0);
+  } else if (key == GLFW_KEY_EQUAL || key == GLFW_KEY_KP_ADD || key == GLFW_KEY_PAGE_UP) {
+    moveCamera(*state, 0.0, 0.0, 0.9);
+  } else if (key == GLFW_KEY_MINUS || key == GLFW_KEY_KP_SUBTRACT || key == GLFW_KEY_PAGE_DOWN) {
+    moveCamera(*state, 0.0, 0.0, 1.0 / 0.9);
+  } else if (key == GLFW_KEY_R) {
+    state->scene.camera = state->orbit.home;
+    state->orbit = orbitOf(state->orbit.home);
+    state->cameraMoved = true;
+  }
+  if (action != GLFW_PRESS) return;  // the rest do not repeat
   if (key == GLFW_KEY_ESCAPE || key == GLFW_KEY_Q) {
     glfwSetWindowShouldClose(window, GLFW_TRUE);
   } else if (key >= GLFW_KEY_1 && key <= GLFW_KEY_8) {
@@ -53,7 +132,7 @@ void onKey(GLFWwindow* window, int key, int, int action, int) {
     for (Sphere& s : state->scene.spheres) s.material = index;
     state->message.clear();
     state->dirty = true;
-  } else if (key == GLFW_KEY_S) {
+  } else if (key == GLFW_KEY_F12) {
     state->screenshot = true;
   } else if (key == GLFW_KEY_P) {
     // The next course material the scene defines.
@@ -90,6 +169,7 @@ void reloadIfChanged(ViewerState& state, const std::string& path,
     Scene scene = parseSceneFile(path);
     times = fileTimes(scene);
     state.scene = std::move(scene);
+    state.orbit = orbitOf(state.scene.camera);
     state.dirty = true;
     state.message = "reloaded";
   } catch (const SceneError& e) {
@@ -124,6 +204,7 @@ int runViewer(const RenderOptions& options) {
     fprintf(stderr, "raytex: %s\n", error.c_str());
     return 1;
   }
+  state.orbit = orbitOf(state.scene.camera);
   for (size_t i = 0; i < 8 && !state.scene.planes.empty(); ++i)
     if (materialIndex(state.scene, kCourseMaterials[i]) == state.scene.planes[0].material) state.planeMaterial = int(i);
 
@@ -136,6 +217,9 @@ int runViewer(const RenderOptions& options) {
     window.window = openWindow(width, height, "raytex");
     glfwSetWindowUserPointer(window.window, &state);
     glfwSetKeyCallback(window.window, onKey);
+    glfwSetMouseButtonCallback(window.window, onMouseButton);
+    glfwSetCursorPosCallback(window.window, onCursor);
+    glfwSetScrollCallback(window.window, onScroll);
     DeviceOptions deviceOptions;
     deviceOptions.deviceIndex = options.device;
     deviceOptions.validation = options.validate;
@@ -144,7 +228,7 @@ int runViewer(const RenderOptions& options) {
     createRenderer(renderer, deviceOptions);
     createSwapchain(window, renderer.device);
 
-    uint32_t textureKinds = 0;
+    GpuScene gpuScene;
     auto lastTitle = std::chrono::steady_clock::now() - std::chrono::seconds(1);
     std::vector<std::filesystem::file_time_type> times = fileTimes(state.scene);
     while (!glfwWindowShouldClose(window.window)) {
@@ -155,13 +239,16 @@ int runViewer(const RenderOptions& options) {
         continue;
       }
       if (size.width != renderer.width || size.height != renderer.height) state.dirty = true;
-      if (state.dirty) {
-        GpuScene g = buildGpuScene(state.scene, size.width, size.height);
-        uploadScene(renderer, g);
-        textureKinds = g.textureKinds;
-        state.dirty = false;
+      if (state.dirty) {  // materials, size or the scene changed: everything
+        gpuScene = buildGpuScene(state.scene, size.width, size.height);
+        uploadScene(renderer, gpuScene);
+        state.dirty = state.cameraMoved = false;
+      } else if (state.cameraMoved) {  // positions are camera-relative: re-pack them only
+        packCamera(gpuScene, state.scene, size.width, size.height);
+        updateSceneBuffers(renderer, gpuScene);
+        state.cameraMoved = false;
       }
-      preparePipeline(renderer, {textureKinds, OUTPUT_SHADED, FILTER_POINT, 1});
+      preparePipeline(renderer, {gpuScene.textureKinds, OUTPUT_SHADED, FILTER_POINT, 1});
       renderFrame(renderer);
       if (state.screenshot) {
         // The same readback and encoding as raytex render: the same PNG for the same view.

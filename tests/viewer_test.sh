@@ -52,8 +52,25 @@ xdotool key --window "$wid" p
 check key-p-cycles waitTitle 'plane: aNoise'
 xdotool key --window "$wid" 5
 check key-5-image waitTitle 'sphere: anImage | plane: aNoise'
-xdotool key --window "$wid" s
+xdotool key --window "$wid" F12
 check screenshot waitTitle "wrote $tmp/shot.png"
+cp "$tmp/shot.png" "$tmp/first.png"
+# Orbit away: the frame changes; R resets: the frame is the scene file's view again.
+waitShot() {  # waitShot: F12, then the new file appears
+  rm -f "$tmp/shot.png"
+  xdotool key --window "$wid" F12
+  for _ in $(seq 100); do [ -s "$tmp/shot.png" ] && return 0; sleep 0.1; done
+  return 1
+}
+xdotool key --window "$wid" d d w
+sleep 0.5
+check orbit-screenshot waitShot
+check orbit-changes-view bash -c "! cmp -s '$tmp/shot.png' '$tmp/first.png'"
+xdotool key --window "$wid" r
+sleep 0.5
+check reset-screenshot waitShot
+check reset-restores-view cmp -s "$tmp/shot.png" "$tmp/first.png"
+cp "$tmp/first.png" "$tmp/shot.png"
 xdotool key --window "$wid" Escape
 for _ in $(seq 100); do kill -0 "$viewer" 2>/dev/null || break; sleep 0.1; done
 wait "$viewer"
