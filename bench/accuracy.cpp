@@ -4,7 +4,7 @@
 // Writes OUTDIR/accuracy.csv and the images (sRGB PNG) that bench/accuracy_chart.py reads.
 // Usage: raytex_bench_accuracy OUTDIR WIDTH HEIGHT RUNS NAME=SCENE [NAME=SCENE ...]
 #include "common.h"
-#include "median.h"
+#include "bench.h"
 #include "gpu_scene.h"
 #include "image_io.h"
 #include "parser.h"

@@ -2,24 +2,19 @@
 // sampling and filtering methods on one scene, median of RUNS frames after a warm-up frame.
 // Usage: raytex_bench_methods SCENE [WIDTH HEIGHT RUNS]
 #include "common.h"
-#include "median.h"
+#include "bench.h"
 #include "gpu_scene.h"
 #include "parser.h"
 #include "renderer.h"
 
-#include <algorithm>
 #include <cstdio>
-#include <cstdlib>
 #include <vector>
 
 int main(int argc, char** argv) {
-  if (argc < 2) {
-    fprintf(stderr, "usage: %s SCENE [WIDTH HEIGHT RUNS]\n", argv[0]);
-    return 2;
-  }
-  const uint32_t width = argc > 3 ? uint32_t(atoi(argv[2])) : 1920;
-  const uint32_t height = argc > 3 ? uint32_t(atoi(argv[3])) : 1080;
-  const int runs = argc > 4 ? atoi(argv[4]) : 5;
+  BenchArgs args;
+  if (!parseBenchArgs(argc, argv, &args)) return 2;
+  const uint32_t width = args.width, height = args.height;
+  const int runs = args.runs;
   struct Method {
     const char* name;
     uint32_t samplesPerSide;
@@ -28,13 +23,13 @@ int main(int argc, char** argv) {
                  {"point, 16 spp", 4, FILTER_POINT}, {"box, 1 spp", 1, FILTER_BOX},
                  {"box, 4 spp", 2, FILTER_BOX}};
   try {
-    Scene scene = parseSceneFile(argv[1]);
+    Scene scene = parseSceneFile(args.scene);
     Renderer r;
     createRenderer(r, {});
-    printf("%s %ux%u, median of %d warm frames\n", argv[1], width, height, runs);
+    GpuScene g = buildGpuScene(scene, width, height);
+    uploadScene(r, g);
+    printf("%s %ux%u, median of %d warm frames\n", args.scene.c_str(), width, height, runs);
     for (const Method& m : methods) {
-      GpuScene g = buildGpuScene(scene, width, height);
-      uploadScene(r, g);
       preparePipeline(r, {g.textureKinds, OUTPUT_SHADED, m.filter, m.samplesPerSide});
       renderFrame(r);  // warm-up: lavapipe compiles at the first dispatch
       std::vector<double> ms;

@@ -3,15 +3,13 @@
 // Usage: raytex_bench_specialisation SCENE [WIDTH HEIGHT RUNS]
 // Run with MESA_SHADER_CACHE_DISABLE=true so each pipeline is compiled for real.
 #include "common.h"
-#include "median.h"
+#include "bench.h"
 #include "gpu_scene.h"
 #include "parser.h"
 #include "renderer.h"
 
-#include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <cstdlib>
 #include <vector>
 
 namespace {
@@ -22,26 +20,22 @@ double msSince(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
-
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc < 2) {
-    fprintf(stderr, "usage: %s SCENE [WIDTH HEIGHT RUNS]\n", argv[0]);
-    return 2;
-  }
-  const uint32_t width = argc > 3 ? uint32_t(atoi(argv[2])) : 1920;
-  const uint32_t height = argc > 3 ? uint32_t(atoi(argv[3])) : 1080;
-  const int runs = argc > 4 ? atoi(argv[4]) : 5;
+  BenchArgs args;
+  if (!parseBenchArgs(argc, argv, &args)) return 2;
+  const uint32_t width = args.width, height = args.height;
+  const int runs = args.runs;
   try {
-    Scene scene = parseSceneFile(argv[1]);
+    Scene scene = parseSceneFile(args.scene);
     GpuScene gpuScene = buildGpuScene(scene, width, height);
     const uint32_t allKinds = (1u << TEX_KIND_COUNT) - 1;
     struct Variant {
       const char* name;
       uint32_t kinds;
     } variants[] = {{"specialised", gpuScene.textureKinds}, {"all kinds", allKinds}};
-    printf("%s %ux%u, %d runs, medians in ms\n", argv[1], width, height, runs);
+    printf("%s %ux%u, %d runs, medians in ms\n", args.scene.c_str(), width, height, runs);
     printf("%-12s %10s %14s %10s\n", "pipeline", "create", "first frame", "frame");
     for (const Variant& v : variants) {
       std::vector<double> create, first, frame;

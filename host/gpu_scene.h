@@ -38,7 +38,8 @@ GpuScene buildGpuScene(const Scene& scene, uint32_t width, uint32_t height);
 // unlike buildGpuScene, which also decodes images.
 void packCamera(GpuScene& gpuScene, const Scene& scene, uint32_t width, uint32_t height);
 
-// The camera as the kernel sees it (exposed for the CPU reference).
+// The camera as the kernel sees it: eye at the origin (camera-relative), axes scaled by the
+// field of view and aspect. Used by packCamera; exposed for its tests.
 gpu::Frame cameraFrame(const Camera& camera, uint32_t width, uint32_t height);
 
 // Bit mask of TEX_* kinds used by the scene's objects.
