@@ -146,7 +146,7 @@ void packCamera(GpuScene& g, const Scene& scene, uint32_t width, uint32_t height
   g.frame = f;
 }
 
-GpuScene buildGpuScene(const Scene& scene, uint32_t width, uint32_t height) {
+GpuScene buildGpuScene(const Scene& scene, uint32_t width, uint32_t height, bool mipmaps) {
   GpuScene g;
   // Materials: only the used ones, re-indexed; image files become array layers.
   Material fallback = defaultMaterial();
@@ -188,10 +188,14 @@ GpuScene buildGpuScene(const Scene& scene, uint32_t width, uint32_t height) {
       g.imageHeight = std::max(g.imageHeight, image.height);
     }
     g.imageLayers = int(images.size());
-    g.imageLevels = mipLevelCount(g.imageWidth, g.imageHeight);
+    g.imageLevels = mipmaps ? mipLevelCount(g.imageWidth, g.imageHeight) : 1;
     std::vector<std::vector<ImageRGBA8>> chains;
     for (const ImageRGBA8& image : images) {
-      chains.push_back(mipChain(resizeImage(image, g.imageWidth, g.imageHeight)));
+      ImageRGBA8 level0 = resizeImage(image, g.imageWidth, g.imageHeight);
+      if (mipmaps)
+        chains.push_back(mipChain(std::move(level0)));
+      else
+        chains.push_back({std::move(level0)});
       const ImageRGBA8& layer = chains.back()[0];
       g.imagePixels.insert(g.imagePixels.end(), layer.pixels.begin(), layer.pixels.end());
     }

@@ -91,7 +91,7 @@ int runRender(const RenderOptions& options) {
       fprintf(stderr, "raytex: %s\n", error.c_str());
       return 2;
     }
-    if (!options.reference) gpuScene = buildGpuScene(scene, job.width, job.height);
+    if (!options.reference) gpuScene = buildGpuScene(scene, job.width, job.height, job.filterBox);
   } catch (const SceneError& e) {
     fprintf(stderr, "%s\n", e.what());
     return 2;

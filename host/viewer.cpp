@@ -240,7 +240,7 @@ int runViewer(const RenderOptions& options) {
       }
       if (size.width != renderer.width || size.height != renderer.height) state.dirty = true;
       if (state.dirty) {  // materials, size or the scene changed: everything
-        gpuScene = buildGpuScene(state.scene, size.width, size.height);
+        gpuScene = buildGpuScene(state.scene, size.width, size.height, false);  // point-sampled
         uploadScene(renderer, gpuScene);
         state.dirty = state.cameraMoved = false;
       } else if (state.cameraMoved) {  // positions are camera-relative: re-pack them only
