@@ -1,6 +1,7 @@
 #include "cli.h"
 
 #include <cerrno>
+#include <cmath>
 #include <cstdlib>
 
 namespace {
@@ -24,7 +25,8 @@ bool parseUint(const std::string& flag, const std::string& text, uint32_t lo, ui
 const char* usageText() {
   return "usage: raytex render SCENE [-o out.png] [--width W] [--height H] [--spp N]\n"
          "                    [--filter point|box] [--reference] [--device N] [--stats] [--validate]\n"
-         "       raytex view SCENE [-o shot.png] [--width W] [--height H] [--device N] [--validate]\n"
+         "       raytex view SCENE [-o shot.png] [--width W] [--height H] [--spp N] [--filter point|box]\n"
+         "                  [--device N] [--frames N] [--stats] [--validate]\n"
          "       raytex devices\n"
          "       raytex --help | --version\n"
          "\n"
@@ -41,11 +43,21 @@ const char* usageText() {
          "                     else the CPU driver lavapipe)\n"
          "  --stats            print one line of phase times in milliseconds\n"
          "  --validate         enable Vulkan validation layers (also RAYTEX_VALIDATION=1)\n"
-         "view     Show SCENE in a window, rendered by the same kernel; the keys:\n"
-         "          1-8 put a course material on the sphere (aSolidChecker, aNoise, aMarble, aWood,\n"
-         "          anImage, aTurbulence, aDturbulence, aChecker), P the next on the plane;\n"
-         "          arrows/WASD or drag orbit, +/- or scroll zoom, R resets the view;\n"
-         "          F12 writes the frame to -o FILE (default out.png), as render would; Esc quits\n"
+         "view     Show SCENE in a window, rendered by the same kernel one sample per frame and\n"
+         "         accumulated while nothing changes, up to --spp samples (default: the scene's\n"
+         "         render block, else 64). Keys:\n"
+         "           1-8        a course material on the sphere: aSolidChecker, aNoise, aMarble,\n"
+         "                      aWood, anImage, aTurbulence, aDturbulence, aChecker\n"
+         "           P          the next course material on the plane\n"
+         "           arrows, WASD, left-drag   orbit the camera around its lookat point\n"
+         "           +/-, PageUp/PageDown, scroll   zoom\n"
+         "           R          reset the view to the scene file's camera\n"
+         "           F12        write -o FILE (default out.png) once every sample is in: the PNG\n"
+         "                      raytex render writes with the same view, size, --spp and --filter\n"
+         "           Esc, Q     quit\n"
+         "  --frames N         quit after N frames (accumulation restarts; for benchmarks)\n"
+         "  --stats            print frame times and material-switch times when quitting\n"
+         "  Saving the scene file reloads it; the title shows the materials, samples and ms/frame.\n"
          "devices  List the Vulkan devices and their indices.\n"
          "\n"
          "Exit codes: 0 success, 1 runtime failure (Vulkan, output file), 2 bad input (usage, scene).\n"
@@ -130,6 +142,11 @@ bool parseCli(const std::vector<std::string>& args, CliArgs* out, std::string* e
         return false;
       }
       r.filter = v == "box";
+    } else if (a == "--frames" && out->command == CliCommand::View) {
+      if (!value(&v) || !parseUint(a, v, 1, 1000000, &r.frames, error)) return false;
+    } else if (a == "--reference" && out->command == CliCommand::View) {
+      *error = "--reference renders on the CPU to a file: use it with raytex render";
+      return false;
     } else if (a == "--reference") {
       r.reference = true;
     } else if (a == "--stats") {
@@ -152,5 +169,21 @@ bool parseCli(const std::vector<std::string>& args, CliArgs* out, std::string* e
   }
   const char* env = getenv("RAYTEX_VALIDATION");
   if (env && std::string(env) == "1") r.validate = true;
+  return true;
+}
+
+bool resolveJob(const RenderOptions& options, const RenderSettings& s, uint32_t defaultSamplesPerPixel,
+                RenderJob* job, std::string* error) {
+  job->width = options.width.value_or(uint32_t(s.width.value_or(640)));
+  job->height = options.height.value_or(uint32_t(s.height.value_or(480)));
+  job->samplesPerPixel =
+      options.samplesPerPixel.value_or(s.samplesPerPixel ? uint32_t(*s.samplesPerPixel) : defaultSamplesPerPixel);
+  job->samplesPerSide = uint32_t(std::lround(std::sqrt(double(job->samplesPerPixel))));
+  job->filterBox = options.filter.value_or(s.filterBox.value_or(false));
+  if (uint64_t(job->width) * job->height > kMaxPixels) {
+    *error = std::to_string(job->width) + "x" + std::to_string(job->height) + " exceeds the limit of " +
+             std::to_string(kMaxPixels) + " pixels (8192x8192)";
+    return false;
+  }
   return true;
 }

@@ -1,6 +1,8 @@
 // Command-line parsing for the raytex binary. No Vulkan.
 #pragma once
 
+#include "scene.h"
+
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -16,8 +18,9 @@ struct RenderOptions {
   std::optional<uint32_t> samplesPerPixel;  // --spp: a square N*N, stratified, box filtered
   std::optional<bool> filter;  // --filter box: textures averaged over each sample's footprint
   bool reference = false;  // --reference: the float64 CPU renderer instead of Vulkan
-  bool stats = false;     // --stats: one line of phase times
+  bool stats = false;     // --stats: one line of phase times (view: frame times at exit)
   bool validate = false;  // --validate, or RAYTEX_VALIDATION=1: Vulkan validation layers
+  uint32_t frames = 0;    // view --frames N: quit after N frames (accumulation restarting)
 };
 
 struct CliArgs {
@@ -29,6 +32,18 @@ struct CliArgs {
 // buffer take 32 bytes per pixel).
 constexpr uint32_t kMaxImageSide = 16384;
 constexpr uint64_t kMaxPixels = uint64_t(8192) * 8192;
+
+// The settings of one render: flags, else the scene's render block, else the defaults (the
+// viewer accumulates defaultSamplesPerPixel where render takes 1).
+struct RenderJob {
+  uint32_t width = 640, height = 480;
+  uint32_t samplesPerPixel = 1, samplesPerSide = 1;
+  bool filterBox = false;
+};
+
+// False with *error set when the size is over kMaxPixels.
+bool resolveJob(const RenderOptions& options, const RenderSettings& scene, uint32_t defaultSamplesPerPixel,
+                RenderJob* job, std::string* error);
 
 // Parses argv; false with *error set (a one-line message) on bad usage.
 bool parseCli(const std::vector<std::string>& args, CliArgs* out, std::string* error);

@@ -146,14 +146,27 @@ void packCamera(GpuScene& g, const Scene& scene, uint32_t width, uint32_t height
   g.frame = f;
 }
 
-GpuScene buildGpuScene(const Scene& scene, uint32_t width, uint32_t height, bool mipmaps) {
+GpuScene buildGpuScene(const Scene& scene, uint32_t width, uint32_t height, bool mipmaps, bool allMaterials) {
   GpuScene g;
   // Materials: only the used ones, re-indexed; image files become array layers.
   Material fallback = defaultMaterial();
   std::map<int, uint32_t> materialIndex;
   std::map<std::string, uint32_t> imageLayer;
   std::vector<ImageRGBA8> images;
-  for (int m : usedMaterials(scene)) {
+  std::vector<int> packed = usedMaterials(scene);
+  if (packed.size() > MAX_MATERIALS) {  // the kernel's uniform block holds MAX_MATERIALS
+    int over = packed[MAX_MATERIALS];
+    FileLoc loc = scene.path.empty() ? FileLoc{} : FileLoc{scene.path, 1, 1};
+    for (const Sphere& o : scene.spheres)
+      if (o.material == over) loc = o.loc;
+    for (const Plane& o : scene.planes)
+      if (o.material == over) loc = o.loc;
+    throw SceneError(loc, "the scene's objects use more than " + std::to_string(MAX_MATERIALS) + " materials");
+  }
+  for (int m = 0; allMaterials && m < int(scene.materials.size()) && packed.size() < MAX_MATERIALS; ++m)
+    if (std::find(packed.begin(), packed.end(), m) == packed.end()) packed.push_back(m);
+  uint32_t packedKinds = 0;
+  for (int m : packed) {
     const Material& material = materialAt(scene, m, fallback);
     uint32_t layer = 0;
     if (material.texture.kind == TextureKind::Image) {
@@ -170,13 +183,14 @@ GpuScene buildGpuScene(const Scene& scene, uint32_t width, uint32_t height, bool
     }
     materialIndex[m] = uint32_t(g.materials.size());
     g.materials.push_back(packMaterial(material, layer));
-    g.textureKinds |= 1u << uint32_t(material.texture.kind);
+    packedKinds |= 1u << uint32_t(material.texture.kind);
   }
+  g.textureKinds = usedTextureKinds(scene);
 
   g.materialIndex = materialIndex;
   packCamera(g, scene, width, height);
 
-  if (g.textureKinds & ((1u << TEX_NOISE) | (1u << TEX_MARBLE) | (1u << TEX_WOOD) |
+  if (packedKinds & ((1u << TEX_NOISE) | (1u << TEX_MARBLE) | (1u << TEX_WOOD) |
                         (1u << TEX_TURBULENCE) | (1u << TEX_DTURBULENCE)))
     fillNoiseTable(&g.noise);
 

@@ -14,7 +14,7 @@ struct GpuScene {
   gpu::Frame frame{};
   std::vector<gpu::Sphere> spheres;
   std::vector<gpu::Plane> planes;
-  std::vector<gpu::Material> materials;  // only those referenced by objects
+  std::vector<gpu::Material> materials;  // those referenced by objects (or all: allMaterials)
   std::vector<gpu::Light> lights;
   gpu::NoiseTable noise{};
   uint32_t textureKinds = 0;  // bit (1 << TEX_*) per kind in use: the specialisation mask
@@ -30,9 +30,12 @@ struct GpuScene {
 };
 
 // mipmaps: build the images' mip chains (only the box-filtered kernel reads them; 11 ms for
-// earth.jpg). Throws SceneError (with the texture's file location) if an image in use cannot be
-// loaded. width, height: output size in pixels.
-GpuScene buildGpuScene(const Scene& scene, uint32_t width, uint32_t height, bool mipmaps = true);
+// earth.jpg). allMaterials: pack every material the scene defines, not only those its objects
+// use, so that objects can switch material with packCamera alone (the viewer); textureKinds
+// still holds only the kinds in use. Throws SceneError (with the texture's file location) if
+// an image cannot be loaded. width, height: output size in pixels.
+GpuScene buildGpuScene(const Scene& scene, uint32_t width, uint32_t height, bool mipmaps = true,
+                       bool allMaterials = false);
 
 // Re-packs what depends on the camera and the output size (the frame, and spheres, planes
 // and lights, which are camera-relative) for a scene whose materials are unchanged: cheap,

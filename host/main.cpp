@@ -22,28 +22,6 @@ double msSince(Clock::time_point& start) {
   return ms;
 }
 
-// The settings of one render: flags, else the scene's render block, else the defaults.
-struct RenderJob {
-  uint32_t width = 640, height = 480;
-  uint32_t samplesPerPixel = 1, samplesPerSide = 1;
-  bool filterBox = false;
-};
-
-bool resolveJob(const RenderOptions& options, const Scene& scene, RenderJob* job, std::string* error) {
-  const RenderSettings& s = scene.render;
-  job->width = options.width.value_or(uint32_t(s.width.value_or(640)));
-  job->height = options.height.value_or(uint32_t(s.height.value_or(480)));
-  job->samplesPerPixel = options.samplesPerPixel.value_or(uint32_t(s.samplesPerPixel.value_or(1)));
-  job->samplesPerSide = uint32_t(std::lround(std::sqrt(double(job->samplesPerPixel))));
-  job->filterBox = options.filter.value_or(s.filterBox.value_or(false));
-  if (uint64_t(job->width) * job->height > kMaxPixels) {
-    *error = std::to_string(job->width) + "x" + std::to_string(job->height) + " exceeds the limit of " +
-             std::to_string(kMaxPixels) + " pixels (8192x8192)";
-    return false;
-  }
-  return true;
-}
-
 int writeImage(const RenderOptions& options, const ImageRGBA8& image, size_t nonFinite) {
   if (nonFinite > 0)
     fprintf(stderr, "warning: %zu non-finite colour values (written as black)\n", nonFinite);
@@ -87,7 +65,7 @@ int runRender(const RenderOptions& options) {
   try {
     scene = parseSceneFile(options.scene);
     std::string error;
-    if (!resolveJob(options, scene, &job, &error)) {
+    if (!resolveJob(options, scene.render, 1, &job, &error)) {
       fprintf(stderr, "raytex: %s\n", error.c_str());
       return 2;
     }

@@ -22,10 +22,11 @@ VkDescriptorSetLayout createTraceSetLayout(const Device& device) {
       binding(BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER),
       binding(BINDING_SPHERES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER),
       binding(BINDING_PLANES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER),
-      binding(BINDING_MATERIALS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER),
+      binding(BINDING_MATERIALS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER),
       binding(BINDING_LIGHTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER),
       binding(BINDING_NOISE, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER),
       binding(BINDING_IMAGES, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER),
+      binding(BINDING_ACCUMULATION, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER),
   };
   VkDescriptorSetLayoutCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
   info.bindingCount = uint32_t(std::size(bindings));
@@ -55,6 +56,7 @@ VkPipeline createTracePipeline(const Device& device, VkPipelineLayout layout, co
       {SPEC_TEXTURE_KINDS, offsetof(PipelineKey, textureKinds), sizeof(uint32_t)},
       {SPEC_OUTPUT_MODE, offsetof(PipelineKey, outputMode), sizeof(uint32_t)},
       {SPEC_SAMPLES_PER_SIDE, offsetof(PipelineKey, samplesPerSide), sizeof(uint32_t)},
+      {SPEC_PROGRESSIVE, offsetof(PipelineKey, progressive), sizeof(VkBool32)},
   };
   VkSpecializationInfo specialization{};
   specialization.mapEntryCount = uint32_t(std::size(entries));
@@ -63,6 +65,7 @@ VkPipeline createTracePipeline(const Device& device, VkPipelineLayout layout, co
   specialization.pData = &key;
 
   VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
+  info.flags = VK_PIPELINE_CREATE_DISPATCH_BASE_BIT;  // warmPipeline dispatches past the image
   info.stage.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
   info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
   info.stage.module = module;

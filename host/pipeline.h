@@ -14,9 +14,11 @@ struct PipelineKey {
   uint32_t outputMode = 0;       // OUTPUT_*
   uint32_t textureFilter = 0;    // FILTER_*: selects the kernel's build variant
   uint32_t samplesPerSide = 1;   // N x N samples per pixel
+  uint32_t progressive = 0;      // 1: one sample per dispatch, accumulated (SPEC_PROGRESSIVE)
   bool operator==(const PipelineKey& o) const {
     return textureKinds == o.textureKinds && outputMode == o.outputMode &&
-           textureFilter == o.textureFilter && samplesPerSide == o.samplesPerSide;
+           textureFilter == o.textureFilter && samplesPerSide == o.samplesPerSide &&
+           progressive == o.progressive;
   }
 };
 

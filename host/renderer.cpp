@@ -14,9 +14,10 @@ void writeDescriptors(Renderer& r) {
   auto bufferInfo = [](const Buffer& b) { return VkDescriptorBufferInfo{b.buffer, 0, VK_WHOLE_SIZE}; };
   const VkDescriptorBufferInfo buffers[] = {bufferInfo(r.frame),     bufferInfo(r.spheres),
                                             bufferInfo(r.planes),    bufferInfo(r.materials),
-                                            bufferInfo(r.lights),    bufferInfo(r.noise)};
-  const uint32_t bufferBindings[] = {BINDING_FRAME,     BINDING_SPHERES, BINDING_PLANES,
-                                     BINDING_MATERIALS, BINDING_LIGHTS,  BINDING_NOISE};
+                                            bufferInfo(r.lights),    bufferInfo(r.noise),
+                                            bufferInfo(r.accumulation)};
+  const uint32_t bufferBindings[] = {BINDING_FRAME,  BINDING_SPHERES, BINDING_PLANES, BINDING_MATERIALS,
+                                     BINDING_LIGHTS, BINDING_NOISE,   BINDING_ACCUMULATION};
 
   std::vector<VkWriteDescriptorSet> writes;
   auto write = [&](uint32_t binding, VkDescriptorType type) {
@@ -28,11 +29,11 @@ void writeDescriptors(Renderer& r) {
     writes.push_back(w);
     return &writes.back();
   };
-  writes.reserve(8);
+  writes.reserve(std::size(buffers) + 2);  // pointers into it stay valid
   write(BINDING_OUTPUT, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE)->pImageInfo = &outputInfo;
   write(BINDING_IMAGES, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER)->pImageInfo = &imagesInfo;
   for (size_t i = 0; i < std::size(buffers); ++i) {
-    bool uniform = bufferBindings[i] == BINDING_FRAME || bufferBindings[i] == BINDING_NOISE;
+    bool uniform = bufferBindings[i] == BINDING_FRAME || bufferBindings[i] == BINDING_NOISE || bufferBindings[i] == BINDING_MATERIALS;
     write(bufferBindings[i], uniform ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER
                                      : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER)->pBufferInfo = &buffers[i];
   }
@@ -50,6 +51,9 @@ void replaceBuffer(Renderer& r, Buffer& buffer, const T* data, size_t count, VkB
 void createOutput(Renderer& r, uint32_t width, uint32_t height) {
   destroyImage(r.device, r.output);
   destroyBuffer(r.device, r.readback);
+  destroyBuffer(r.device, r.accumulation);
+  r.accumulation = createBuffer(r.device, r.accumulate ? VkDeviceSize(width) * height * 16 : 16,
+                                VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
   r.output = createImage(r.device, width, height, 1, VK_FORMAT_R32G32B32A32_SFLOAT,
                          VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, false);
   r.readback = createBuffer(r.device, VkDeviceSize(width) * height * 16, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
@@ -74,8 +78,8 @@ void createRenderer(Renderer& r, const DeviceOptions& options) {
   VK_CHECK(vkCreatePipelineLayout(r.device.device, &layoutInfo, nullptr, &r.pipelineLayout));
 
   const VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1},
-                                        {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 2},
-                                        {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 4},
+                                        {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 3},
+                                        {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 5},
                                         {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1}};
   VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
   poolInfo.maxSets = 1;
@@ -119,8 +123,9 @@ void destroyRenderer(Renderer& r) {
   if (r.device.device) {
     VkDevice d = r.device.device;
     vkDeviceWaitIdle(d);
-    if (r.pipeline) vkDestroyPipeline(d, r.pipeline, nullptr);
-    for (Buffer* b : {&r.frame, &r.spheres, &r.planes, &r.materials, &r.lights, &r.noise, &r.readback})
+    for (CachedPipeline& p : r.pipelines) vkDestroyPipeline(d, p.pipeline, nullptr);
+    for (Buffer* b : {&r.frame, &r.spheres, &r.planes, &r.materials, &r.lights, &r.noise, &r.readback,
+                      &r.accumulation})
       destroyBuffer(r.device, *b);
     destroyImage(r.device, r.output);
     destroyImage(r.device, r.images);
@@ -141,7 +146,10 @@ void uploadScene(Renderer& r, const GpuScene& s) {
   replaceBuffer(r, r.frame, &s.frame, 1, uniform);
   replaceBuffer(r, r.spheres, s.spheres.data(), s.spheres.size(), storage);
   replaceBuffer(r, r.planes, s.planes.data(), s.planes.size(), storage);
-  replaceBuffer(r, r.materials, s.materials.data(), s.materials.size(), storage);
+  // The whole uniform block (the kernel declares MAX_MATERIALS; buildGpuScene keeps to it).
+  std::vector<gpu::Material> materials(s.materials);
+  materials.resize(MAX_MATERIALS);
+  replaceBuffer(r, r.materials, materials.data(), materials.size(), uniform);
   replaceBuffer(r, r.lights, s.lights.data(), s.lights.size(), storage);
   // Full size even when unused (2 KiB): the kernel declares the whole block.
   replaceBuffer(r, r.noise, &s.noise, 1, uniform);
@@ -160,7 +168,8 @@ void uploadScene(Renderer& r, const GpuScene& s) {
   else
     uploadImageLayers(r.device, r.images, placeholder, sizeof(placeholder));
 
-  if (s.frame.width != r.width || s.frame.height != r.height || !r.output.image)
+  bool accumulationFits = r.accumulation.size == (r.accumulate ? VkDeviceSize(r.width) * r.height * 16 : 16);
+  if (s.frame.width != r.width || s.frame.height != r.height || !r.output.image || !accumulationFits)
     createOutput(r, s.frame.width, s.frame.height);
   writeDescriptors(r);
 }
@@ -173,15 +182,46 @@ void updateSceneBuffers(Renderer& r, const GpuScene& s) {
   writeBuffer(r.lights, s.lights.data(), sizeof(gpu::Light) * s.lights.size());
 }
 
+namespace {
+
+CachedPipeline& cachedPipeline(Renderer& r, const PipelineKey& key) {
+  for (CachedPipeline& p : r.pipelines)
+    if (p.key == key) return p;
+  r.pipelines.push_back({key, createTracePipeline(r.device, r.pipelineLayout, key), false});
+  return r.pipelines.back();
+}
+
+void bindAndDispatch(Renderer& r, VkCommandBuffer cmd, VkPipeline pipeline, uint32_t baseX, uint32_t groupsX,
+                     uint32_t groupsY) {
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
+  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, r.pipelineLayout, 0, 1, &r.descriptorSet, 0,
+                          nullptr);
+  vkCmdDispatchBase(cmd, baseX, 0, 0, groupsX, groupsY, 1);
+}
+
+}  // namespace
+
 void preparePipeline(Renderer& r, const PipelineKey& key) {
   if (r.pipeline && r.pipelineKey == key) return;
-  if (r.pipeline) {
-    VK_CHECK(vkDeviceWaitIdle(r.device.device));
-    vkDestroyPipeline(r.device.device, r.pipeline, nullptr);
-    r.pipeline = VK_NULL_HANDLE;
-  }
-  r.pipeline = createTracePipeline(r.device, r.pipelineLayout, key);
+  r.pipeline = cachedPipeline(r, key).pipeline;
   r.pipelineKey = key;
+}
+
+bool pipelineWarm(const Renderer& r, const PipelineKey& key) {
+  for (const CachedPipeline& p : r.pipelines)
+    if (p.key == key) return p.dispatched;
+  return false;
+}
+
+void warmPipeline(Renderer& r, const PipelineKey& key) {
+  CachedPipeline& p = cachedPipeline(r, key);
+  if (p.dispatched) return;
+  // One workgroup past the image's right edge: every invocation returns at once, nothing is
+  // written, but lavapipe compiles the kernel for the bound resources.
+  VkCommandBuffer cmd = beginCommands(r.device);
+  bindAndDispatch(r, cmd, p.pipeline, (r.width + WORKGROUP_X - 1) / WORKGROUP_X, 1, 1);
+  submitAndWait(r.device, cmd);
+  p.dispatched = true;
 }
 
 void renderFrame(Renderer& r) {
@@ -191,18 +231,24 @@ void renderFrame(Renderer& r) {
     vkCmdResetQueryPool(cmd, r.timestamps, 0, 2);
     vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, r.timestamps, 0);
   }
-  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, r.pipeline);
-  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, r.pipelineLayout, 0, 1,
-                          &r.descriptorSet, 0, nullptr);
-  vkCmdDispatch(cmd, (r.width + WORKGROUP_X - 1) / WORKGROUP_X,
-                (r.height + WORKGROUP_Y - 1) / WORKGROUP_Y, 1);
+  bindAndDispatch(r, cmd, r.pipeline, 0, (r.width + WORKGROUP_X - 1) / WORKGROUP_X,
+                  (r.height + WORKGROUP_Y - 1) / WORKGROUP_Y);
   if (r.timestamps) vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, r.timestamps, 1);
   submitAndWait(r.device, cmd);
+  cachedPipeline(r, r.pipelineKey).dispatched = true;
   r.lastFrameMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   uint64_t ticks[2] = {0, 0};
   if (r.timestamps && vkGetQueryPoolResults(r.device.device, r.timestamps, 0, 2, sizeof(ticks), ticks,
                                             sizeof(uint64_t), VK_QUERY_RESULT_64_BIT) == VK_SUCCESS)
     r.lastFrameMs = double(ticks[1] - ticks[0]) * r.device.properties.limits.timestampPeriod * 1e-6;
+}
+
+void renderSample(Renderer& r, uint32_t index) {
+  // The previous dispatch has completed (renderFrame waits), so the mapped uniform can change.
+  gpu::Frame* frame = static_cast<gpu::Frame*>(r.frame.data);
+  frame->sampleIndex = index;
+  frame->sampleWeight = 1.0f / float(index + 1);
+  renderFrame(r);
 }
 
 void readbackFrame(Renderer& r) {

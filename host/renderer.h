@@ -8,6 +8,13 @@
 #include "resources.h"
 
 #include <cstdint>
+#include <vector>
+
+struct CachedPipeline {
+  PipelineKey key;
+  VkPipeline pipeline = VK_NULL_HANDLE;
+  bool dispatched = false;  // lavapipe compiles to machine code at the first dispatch
+};
 
 struct Renderer {
   Device device;
@@ -16,11 +23,14 @@ struct Renderer {
   VkDescriptorPool descriptorPool = VK_NULL_HANDLE;
   VkDescriptorSet descriptorSet = VK_NULL_HANDLE;
   VkSampler sampler = VK_NULL_HANDLE;
-  VkPipeline pipeline = VK_NULL_HANDLE;
+  VkPipeline pipeline = VK_NULL_HANDLE;  // the current one, from `pipelines`
   PipelineKey pipelineKey;
+  std::vector<CachedPipeline> pipelines;  // every one created, kept for switching back
 
   Buffer frame, spheres, planes, materials, lights, noise;
   Buffer readback;  // width * height * 4 floats
+  Buffer accumulation;  // progressive sums, width * height * 4 floats when `accumulate`
+  bool accumulate = false;  // set before uploadScene to render progressively (the viewer)
   Image output;     // rgba32f storage image
   Image images;     // sampler2DArray of image textures (1x1 placeholder when none)
   uint32_t width = 0, height = 0;
@@ -37,11 +47,23 @@ void uploadScene(Renderer& renderer, const GpuScene& scene);
 // Rewrites the frame, sphere, plane and light buffers after packCamera (same counts and size).
 void updateSceneBuffers(Renderer& renderer, const GpuScene& scene);
 
-// Creates the pipeline specialised to `key` unless it is the current one.
+// Makes the pipeline specialised to `key` the current one, creating it unless created before.
 void preparePipeline(Renderer& renderer, const PipelineKey& key);
+
+// Whether the pipeline for `key` exists and has run (lavapipe compiles at the first dispatch).
+bool pipelineWarm(const Renderer& renderer, const PipelineKey& key);
+
+// Creates the pipeline for `key` and dispatches it once over no pixels, so that a later switch
+// to it costs nothing; the current pipeline and the image stay as they were. Waits.
+void warmPipeline(Renderer& renderer, const PipelineKey& key);
 
 // Dispatches the kernel over the whole image; waits. Sets lastFrameMs.
 void renderFrame(Renderer& renderer);
+
+// Progressive pipelines: adds sample `index` (0 restarts) of the N x N grid and writes the mean
+// of samples 0..index to the output image. After N * N of them the output is bit-identical to
+// renderFrame with the N x N pipeline.
+void renderSample(Renderer& renderer, uint32_t index);
 
 // Copies the rendered image into the host-visible readback buffer; waits.
 void readbackFrame(Renderer& renderer);

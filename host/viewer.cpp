@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -46,16 +47,20 @@ Orbit orbitOf(const Camera& camera) {
   return o;
 }
 
+using Clock = std::chrono::steady_clock;
+
 struct ViewerState {
   Scene scene;
   Orbit orbit;
-  bool dirty = true;         // the GPU scene must be rebuilt
-  bool cameraMoved = false;  // only the camera changed: re-pack positions
+  bool dirty = true;         // the GPU scene must be rebuilt (size or scene file changed)
+  bool cameraMoved = false;  // the camera or an object's material changed: re-pack the objects
   bool dragging = false;
   double lastX = 0.0, lastY = 0.0;
-  bool screenshot = false;   // write the next frame to the output PNG
+  bool screenshot = false;   // write the image to the output PNG once it has every sample
+  bool refresh = false;      // the window needs the image again (exposed)
   int planeMaterial = -1;    // index into kCourseMaterials for P cycling
   std::string message;      // shown in the title (e.g. a material the scene does not define)
+  std::optional<Clock::time_point> switchedAt;  // a material key, until its frame is shown
 };
 
 int materialIndex(const Scene& scene, const char* name) {
@@ -131,7 +136,8 @@ void onKey(GLFWwindow* window, int key, int, int action, int) {
     }
     for (Sphere& s : state->scene.spheres) s.material = index;
     state->message.clear();
-    state->dirty = true;
+    state->cameraMoved = true;
+    state->switchedAt = Clock::now();
   } else if (key == GLFW_KEY_F12) {
     state->screenshot = true;
   } else if (key == GLFW_KEY_P) {
@@ -142,7 +148,8 @@ void onKey(GLFWwindow* window, int key, int, int action, int) {
       if (index < 0) continue;
       state->planeMaterial = next;
       for (Plane& p : state->scene.planes) p.material = index;
-      state->dirty = true;
+      state->cameraMoved = true;
+      state->switchedAt = Clock::now();
       break;
     }
   }
@@ -178,16 +185,67 @@ void reloadIfChanged(ViewerState& state, const std::string& path,
   }
 }
 
-std::string title(const ViewerState& state, double frameMs) {
+// Samples per pixel the viewer accumulates when neither --spp nor the scene's render block
+// says: 8 x 8, about a second at 60 frames per second.
+constexpr uint32_t kViewerSamplesPerPixel = 64;
+
+std::string title(const ViewerState& state, uint32_t samples, uint32_t target, double frameMs, double gpuMs) {
   std::string t = "raytex";
   if (!state.scene.spheres.empty()) t += " | sphere: " + materialName(state.scene, state.scene.spheres[0].material);
   if (!state.scene.planes.empty()) t += " | plane: " + materialName(state.scene, state.scene.planes[0].material);
-  char ms[32];
-  snprintf(ms, sizeof(ms), " | %.1f ms/frame", frameMs);
-  t += ms;
+  char text[96];
+  snprintf(text, sizeof(text), " | %u/%u samples | %.1f ms/frame (GPU %.1f)", samples, target, frameMs, gpuMs);
+  t += text;
   if (!state.message.empty()) t += " | " + state.message;
   return t;
 }
+
+// The pipeline that renders `scene` progressively with the job's settings.
+PipelineKey viewerKey(const Scene& scene, const RenderJob& job) {
+  return {usedTextureKinds(scene), OUTPUT_SHADED, uint32_t(job.filterBox ? FILTER_BOX : FILTER_POINT),
+          job.samplesPerSide, 1};
+}
+
+// A pipeline a key could need next that has not run yet: the course materials on the sphere,
+// then on the plane. False when all are ready.
+bool nextPipelineToWarm(const ViewerState& state, const Renderer& renderer, const RenderJob& job, PipelineKey* key) {
+  for (int onPlane = 0; onPlane < 2; ++onPlane)
+    for (const char* name : kCourseMaterials) {
+      int index = materialIndex(state.scene, name);
+      if (index < 0) continue;
+      Scene switched = state.scene;
+      if (onPlane)
+        for (Plane& p : switched.planes) p.material = index;
+      else
+        for (Sphere& s : switched.spheres) s.material = index;
+      *key = viewerKey(switched, job);
+      if (!pipelineWarm(renderer, *key)) return true;
+    }
+  return false;
+}
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 0.0;
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+
+double msBetween(Clock::time_point from, Clock::time_point to) {
+  return std::chrono::duration<double, std::milli>(to - from).count();
+}
+
+// Frame times for --stats and --frames, printed when the viewer quits.
+struct FrameStats {
+  std::vector<double> frameMs, gpuMs, presentMs, switchMs;
+  void print(uint32_t width, uint32_t height) const {
+    printf("raytex: %zu frames at %ux%u: median %.2f ms per frame (%.1f fps); GPU %.2f ms, present %.2f ms\n",
+           frameMs.size(), width, height, median(frameMs), 1000.0 / std::max(median(frameMs), 1e-9),
+           median(gpuMs), median(presentMs));
+    if (!switchMs.empty())
+      printf("raytex: %zu material switches: key to frame shown median %.1f ms, max %.1f ms\n", switchMs.size(),
+             median(switchMs), *std::max_element(switchMs.begin(), switchMs.end()));
+  }
+};
 
 }  // namespace
 
@@ -199,10 +257,12 @@ int runViewer(const RenderOptions& options) {
     fprintf(stderr, "%s\n", e.what());
     return 2;
   }
+  RenderJob job;
   std::string error;
-  if (!initWindowSystem(&error)) {
+  if (!resolveJob(options, state.scene.render, kViewerSamplesPerPixel, &job, &error) ||
+      !initWindowSystem(&error)) {
     fprintf(stderr, "raytex: %s\n", error.c_str());
-    return 1;
+    return error.find("exceeds") != std::string::npos ? 2 : 1;
   }
   state.orbit = orbitOf(state.scene.camera);
   for (size_t i = 0; i < 8 && !state.scene.planes.empty(); ++i)
@@ -210,16 +270,19 @@ int runViewer(const RenderOptions& options) {
 
   Window window;
   Renderer renderer;
+  renderer.accumulate = true;
+  FrameStats stats;
   int rc = 0;
   try {
-    int width = int(options.width.value_or(uint32_t(state.scene.render.width.value_or(640))));
-    int height = int(options.height.value_or(uint32_t(state.scene.render.height.value_or(480))));
-    window.window = openWindow(width, height, "raytex");
+    window.window = openWindow(int(job.width), int(job.height), "raytex");
     glfwSetWindowUserPointer(window.window, &state);
     glfwSetKeyCallback(window.window, onKey);
     glfwSetMouseButtonCallback(window.window, onMouseButton);
     glfwSetCursorPosCallback(window.window, onCursor);
     glfwSetScrollCallback(window.window, onScroll);
+    glfwSetWindowRefreshCallback(window.window, [](GLFWwindow* w) {
+      static_cast<ViewerState*>(glfwGetWindowUserPointer(w))->refresh = true;
+    });
     DeviceOptions deviceOptions;
     deviceOptions.deviceIndex = options.device;
     deviceOptions.validation = options.validate;
@@ -228,45 +291,86 @@ int runViewer(const RenderOptions& options) {
     createRenderer(renderer, deviceOptions);
     createSwapchain(window, renderer.device);
 
+    const uint32_t target = job.samplesPerSide * job.samplesPerSide;
+    uint32_t samples = 0;  // accumulated in the image on screen
     GpuScene gpuScene;
-    auto lastTitle = std::chrono::steady_clock::now() - std::chrono::seconds(1);
+    auto lastTitle = Clock::now() - std::chrono::seconds(1);
+    auto frameStart = Clock::now();
     std::vector<std::filesystem::file_time_type> times = fileTimes(state.scene);
     while (!glfwWindowShouldClose(window.window)) {
-      glfwPollEvents();
+      bool busy = samples < target || state.dirty || state.cameraMoved || state.refresh || state.screenshot;
+      PipelineKey warm;
+      if (busy || options.frames) {
+        glfwPollEvents();
+      } else if (nextPipelineToWarm(state, renderer, job, &warm)) {
+        // Idle: compile what a key may need next, so that the switch shows on the next frame.
+        warmPipeline(renderer, warm);
+        glfwPollEvents();
+      } else {
+        glfwWaitEventsTimeout(0.25);  // wakes for the reload poll
+      }
       VkExtent2D size = framebufferSize(window);
       if (size.width == 0 || size.height == 0) {  // minimised
         glfwWaitEvents();
         continue;
       }
       if (size.width != renderer.width || size.height != renderer.height) state.dirty = true;
-      if (state.dirty) {  // materials, size or the scene changed: everything
-        gpuScene = buildGpuScene(state.scene, size.width, size.height, false);  // point-sampled
+      for (const Sphere& o : state.scene.spheres)  // a material not packed (over MAX_MATERIALS)
+        if (!gpuScene.materialIndex.count(o.material)) state.dirty = true;
+      for (const Plane& o : state.scene.planes)
+        if (!gpuScene.materialIndex.count(o.material)) state.dirty = true;
+      if (state.dirty) {  // the size or the scene file changed: everything
+        bool images = job.filterBox;  // mip chains only for the filtered kernel
+        gpuScene = buildGpuScene(state.scene, size.width, size.height, images, true);
         uploadScene(renderer, gpuScene);
         state.dirty = state.cameraMoved = false;
-      } else if (state.cameraMoved) {  // positions are camera-relative: re-pack them only
+        samples = 0;
+      } else if (state.cameraMoved) {  // camera-relative positions and material indices
         packCamera(gpuScene, state.scene, size.width, size.height);
         updateSceneBuffers(renderer, gpuScene);
         state.cameraMoved = false;
+        samples = 0;
       }
-      preparePipeline(renderer, {gpuScene.textureKinds, OUTPUT_SHADED, FILTER_POINT, 1});
-      renderFrame(renderer);
-      if (state.screenshot) {
-        // The same readback and encoding as raytex render: the same PNG for the same view.
+      if (options.frames && samples == target) samples = 0;  // --frames: keep rendering
+      bool render = samples < target;
+      if (render) {
+        preparePipeline(renderer, viewerKey(state.scene, job));
+        renderSample(renderer, samples++);
+        stats.gpuMs.push_back(renderer.lastFrameMs);
+      }
+      if (state.screenshot && samples == target) {
+        // Every sample in: bit-identical to raytex render's image with these settings.
         state.screenshot = false;
         readbackFrame(renderer);
         writePngAtomic(options.output, encodeSrgb(framePixels(renderer), int(renderer.width), int(renderer.height)));
         state.message = "wrote " + options.output;
-        printf("raytex: wrote %s (%ux%u)\n", options.output.c_str(), renderer.width, renderer.height);
+        printf("raytex: wrote %s (%ux%u, %u spp, filter %s)\n", options.output.c_str(), renderer.width,
+               renderer.height, target, job.filterBox ? "box" : "point");
         fflush(stdout);
       }
-      if (!presentImage(window, renderer.device, renderer.output)) createSwapchain(window, renderer.device);
-      auto now = std::chrono::steady_clock::now();
+      if (render || state.refresh) {
+        state.refresh = false;
+        auto presentStart = Clock::now();
+        if (!presentImage(window, renderer.device, renderer.output)) createSwapchain(window, renderer.device);
+        auto now = Clock::now();
+        if (state.switchedAt) stats.switchMs.push_back(msBetween(*state.switchedAt, now));
+        state.switchedAt.reset();
+        stats.presentMs.push_back(msBetween(presentStart, now));
+        stats.frameMs.push_back(msBetween(frameStart, now));
+        frameStart = now;
+      } else {
+        frameStart = Clock::now();
+      }
+      if (options.frames && stats.frameMs.size() >= options.frames) break;
+      auto now = Clock::now();
       if (now - lastTitle > std::chrono::milliseconds(250)) {  // also the reload poll
         reloadIfChanged(state, options.scene, times);
-        glfwSetWindowTitle(window.window, title(state, renderer.lastFrameMs).c_str());
+        double frameMs = stats.frameMs.empty() ? 0.0 : stats.frameMs.back();
+        glfwSetWindowTitle(window.window, title(state, samples, target, frameMs, renderer.lastFrameMs).c_str());
         lastTitle = now;
       }
     }
+    if (options.stats || options.frames) stats.print(renderer.width, renderer.height);
     if (renderer.device.validationErrors > 0) {
       fprintf(stderr, "raytex: %d Vulkan validation error(s)\n", renderer.device.validationErrors);
       rc = 1;

@@ -16,15 +16,17 @@ layout(constant_id = SPEC_OUTPUT_MODE) const uint OUTPUT_MODE = OUTPUT_SHADED;
 // A constant, not a uniform: around the whole shading code, a loop with a runtime bound
 // doubled the 1-sample frame time on lavapipe (119 -> 216 ms at 1080p).
 layout(constant_id = SPEC_SAMPLES_PER_SIDE) const uint SAMPLES_PER_SIDE = 1u;
+layout(constant_id = SPEC_PROGRESSIVE) const bool PROGRESSIVE = false;
 
 layout(binding = BINDING_OUTPUT, rgba32f) uniform writeonly image2D outputImage;
 layout(std140, binding = BINDING_FRAME) uniform FrameBlock { Frame frame; };
 layout(std430, binding = BINDING_SPHERES) readonly buffer SphereBlock { Sphere spheres[]; };
 layout(std430, binding = BINDING_PLANES) readonly buffer PlaneBlock { Plane planes[]; };
-layout(std430, binding = BINDING_MATERIALS) readonly buffer MaterialBlock { Material materials[]; };
+layout(std140, binding = BINDING_MATERIALS) uniform MaterialBlock { Material materials[MAX_MATERIALS]; };
 layout(std430, binding = BINDING_LIGHTS) readonly buffer LightBlock { Light lights[]; };
 layout(std140, binding = BINDING_NOISE) uniform NoiseBlock { NoiseTable noiseTable; };
 layout(binding = BINDING_IMAGES) uniform sampler2DArray images;
+layout(std430, binding = BINDING_ACCUMULATION) buffer AccumulationBlock { vec4 accumulation[]; };
 
 #include "noise.glsl"
 #include "mapping.glsl"
@@ -114,13 +116,25 @@ void main() {
 #ifdef RAYTEX_DEBUG_OUTPUT
   vec4 result = debugOutput(origin, vec2(pixel) + 0.5);
 #else
-  // N x N stratified samples at the centres of the sub-pixel cells, box filtered.
+  // N x N stratified samples at the centres of the sub-pixel cells, box filtered. Progressive
+  // rendering adds the same samples one per dispatch, in the same order and the same float
+  // operations, so its last mean is bit-identical to the single-dispatch image.
   const uint n = SAMPLES_PER_SIDE;
-  vec3 sum = vec3(0.0);
-  for (uint sy = 0u; sy < n; ++sy)
-    for (uint sx = 0u; sx < n; ++sx)
-      sum += radiance(origin, vec2(pixel) + (vec2(sx, sy) + 0.5) / float(n), 1.0 / float(n));
-  vec4 result = vec4(sum / float(n * n), 1.0);
+  vec4 result;
+  if (PROGRESSIVE) {
+    uint i = pixel.y * frame.width + pixel.x;
+    uvec2 cell = uvec2(frame.sampleIndex % n, frame.sampleIndex / n);
+    vec3 sum = frame.sampleIndex == 0u ? vec3(0.0) : accumulation[i].rgb;
+    sum += radiance(origin, vec2(pixel) + (vec2(cell) + 0.5) / float(n), 1.0 / float(n));
+    accumulation[i] = vec4(sum, 1.0);
+    result = vec4(sum * frame.sampleWeight, 1.0);
+  } else {
+    vec3 sum = vec3(0.0);
+    for (uint sy = 0u; sy < n; ++sy)
+      for (uint sx = 0u; sx < n; ++sx)
+        sum += radiance(origin, vec2(pixel) + (vec2(sx, sy) + 0.5) / float(n), 1.0 / float(n));
+    result = vec4(sum * (1.0 / float(n * n)), 1.0);
+  }
 #endif
   imageStore(outputImage, ivec2(pixel), result);
 }

@@ -57,6 +57,10 @@ check png-signature test "$(head -c 8 "$tmp/ok.png" | od -An -tx1 | tr -d ' \n')
 check png-size test "$(od -An -tu1 -j16 -N8 "$tmp/ok.png" | tr -s ' ')" = " 0 0 0 64 0 0 0 48"
 check no-temp-files test "$(ls "$tmp" | grep -c tmp-)" -eq 0
 
+expect help-view-keys 0 'F12 .*write -o FILE' -- "$raytex" --help
+expect view-reference 2 '--reference renders on the CPU to a file' -- "$raytex" view s.cfg --reference
+expect view-frames 2 '--frames expects an integer from 1' -- "$raytex" view s.cfg --frames 0
+expect render-frames 2 "unknown option '--frames'" -- "$raytex" render s.cfg --frames 5
 # No display: the viewer says to render to a file instead, exit 1.
 expect view-no-display 1 'no display.*raytex render' -- env -u DISPLAY -u WAYLAND_DISPLAY "$raytex" view \
   "$src/scenes/textures.cfg"

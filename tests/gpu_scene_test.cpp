@@ -137,3 +137,33 @@ TEST(GpuScene, ImagesShareOneArrayLayerPerFile) {
 }
 
 }  // namespace
+
+TEST(GpuScene, MoreMaterialsThanTheKernelHoldsIsASceneError) {
+  std::string text;
+  for (int i = 0; i <= MAX_MATERIALS; ++i) {
+    text += "material m" + std::to_string(i) + " { diffuse = (0.5, 0.5, 0.5); }\n";
+    text += "sphere { center = (" + std::to_string(i) + ", 0, 0); radius = 0.5; m" + std::to_string(i) + "; }\n";
+  }
+  Scene scene = parseSceneText(text, "many.cfg");
+  try {
+    buildGpuScene(scene, 8, 8);
+    FAIL() << "no error for " << MAX_MATERIALS + 1 << " materials";
+  } catch (const SceneError& e) {
+    // The sphere with the first material over the limit: line 2 * MAX_MATERIALS + 2.
+    EXPECT_EQ(std::string(e.what()), "many.cfg:" + std::to_string(2 * MAX_MATERIALS + 2) +
+                                         ":1: the scene's objects use more than 256 materials");
+  }
+  scene.spheres.pop_back();  // exactly MAX_MATERIALS: fine
+  EXPECT_EQ(buildGpuScene(scene, 8, 8).materials.size(), size_t(MAX_MATERIALS));
+}
+
+TEST(GpuScene, AllMaterialsPacksUnusedOnesButSpecialisesToTheUsed) {
+  Scene scene = parseSceneFile(std::string(RAYTEX_SOURCE_DIR) + "/scenes/textures.cfg");
+  GpuScene used = buildGpuScene(scene, 8, 8, false);
+  GpuScene all = buildGpuScene(scene, 8, 8, false, true);
+  EXPECT_EQ(used.materials.size(), 2u);
+  EXPECT_EQ(all.materials.size(), scene.materials.size());
+  EXPECT_EQ(all.textureKinds, used.textureKinds);
+  EXPECT_EQ(all.imageLayers, 1);  // anImage's earth.jpg, ready for a switch
+  EXPECT_EQ(used.imageLayers, 0);
+}

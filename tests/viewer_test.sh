@@ -44,6 +44,7 @@ waitTitle() {  # waitTitle PATTERN: the title matches within 10 s
   return 1
 }
 check initial-materials waitTitle 'sphere: aSolidChecker | plane: aChecker'
+check accumulates waitTitle '| 64/64 samples'
 xdotool key --window "$wid" 3
 check key-3-marble waitTitle 'sphere: aMarble'
 xdotool key --window "$wid" p
@@ -82,7 +83,7 @@ check no-validation-errors test "$(grep -c 'validation error' "$tmp/view.log")" 
 # The same view headless: the sphere and plane materials switched in the scene file.
 sed -e 's|^    aSolidChecker;|    // aSolidChecker;|' -e 's|^    // anImage;|    anImage;|' \
   -e 's|^    aChecker;|    aNoise;|' "$src/scenes/textures.cfg" >"$src/scenes/.viewer-test.cfg"
-"$raytex" render "$src/scenes/.viewer-test.cfg" -o "$tmp/render.png" --width 320 --height 240
+"$raytex" render "$src/scenes/.viewer-test.cfg" -o "$tmp/render.png" --width 320 --height 240 --spp 64
 rm -f "$src/scenes/.viewer-test.cfg"
 check screenshot-equals-render cmp -s "$tmp/shot.png" "$tmp/render.png"
 

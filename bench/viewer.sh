@@ -1,0 +1,59 @@
+#!/usr/bin/env bash
+# The viewer's frame rate and material-switch latency on a virtual X display (Xvfb).
+# Frames: `raytex view --frames N` renders N frames (accumulation restarting) and prints the
+# median frame time: render (GPU timestamps) + present. Switches: keys 1-8 and P pressed one
+# by one, key-to-frame-shown time, after the idle viewer has prepared the pipelines
+# ("warm"), and with --frames keeping it busy so that it never prepares them ("cold").
+# Usage: bench/viewer.sh [BUILD_DIR] [RUNS]   (prints one line per measurement)
+set -eu
+build=${1:-build}
+runs=${2:-3}
+src=$(cd "$(dirname "$0")/.." && pwd)
+raytex=$(cd "$build" && pwd)/raytex
+export VK_ICD_FILENAMES=${VK_ICD_FILENAMES:-/usr/share/vulkan/icd.d/lvp_icd.x86_64.json}
+export LP_NUM_THREADS=${LP_NUM_THREADS:-2}
+tmp=$(mktemp -d)
+display=""
+for n in $(seq 130 160); do [ -e /tmp/.X11-unix/X$n ] || { display=":$n"; break; }; done
+Xvfb "$display" -screen 0 1920x1200x24 >/dev/null 2>&1 &
+xvfb=$!
+trap 'kill $xvfb 2>/dev/null; rm -rf "$tmp"' EXIT
+export DISPLAY=$display
+for _ in $(seq 50); do xdotool getdisplaygeometry >/dev/null 2>&1 && break; sleep 0.1; done
+
+# The course scene, and the same with aMarble on the sphere.
+mkdir -p "$tmp/scenes"
+cp "$src/scenes/textures.cfg" "$src/scenes/texture_include.cfg" "$tmp/scenes/"
+ln -s "$src/textures" "$tmp/textures"
+sed -e 's|^    aSolidChecker;|    // aSolidChecker;|' -e 's|^    // aMarble;|    aMarble;|' \
+  "$src/scenes/textures.cfg" >"$tmp/scenes/marble.cfg"
+
+for size in 640x480 1280x720; do
+  for scene in textures marble; do
+    for _ in $(seq "$runs"); do
+      line=$("$raytex" view "$tmp/scenes/$scene.cfg" --width "${size%x*}" --height "${size#*x}" --frames 300 |
+        grep frames)
+      echo "$scene $line"
+    done
+  done
+done
+
+switches() {  # switches LABEL SETTLE_SECONDS VIEW_ARGS...: press the material keys, print the latency
+  local label=$1 settle=$2
+  shift 2
+  "$raytex" view "$tmp/scenes/textures.cfg" --stats "$@" >"$tmp/switch.log" 2>&1 &
+  local viewer=$! wid=""
+  for _ in $(seq 100); do wid=$(xdotool search --name '^raytex' 2>/dev/null | head -1); [ -n "$wid" ] && break; sleep 0.1; done
+  sleep "$settle"
+  for key in 2 3 4 5 6 7 8 1 p p p; do
+    xdotool key --window "$wid" "$key"
+    sleep 0.7
+  done
+  xdotool key --window "$wid" Escape
+  wait "$viewer"
+  echo "$label $(grep switches "$tmp/switch.log")"
+}
+for _ in $(seq "$runs"); do
+  switches warm 15
+  switches cold 2 --frames 1000000
+done
