@@ -3,11 +3,13 @@
 # Frames: `raytex view --frames N` renders N frames (accumulation restarting) and prints the
 # median frame time: render (GPU timestamps) + present. Switches: keys 1-8 and P pressed one
 # by one, key-to-frame-shown time, after the idle viewer has prepared the pipelines
-# ("warm"), and with --frames keeping it busy so that it never prepares them ("cold").
-# Usage: bench/viewer.sh [BUILD_DIR] [RUNS]   (prints one line per measurement)
-set -eu
+# ("warm"), and with --frames keeping it busy so that it never prepares them ("cold"), with
+# Mesa's shader cache disabled.
+# Usage: bench/viewer.sh [BUILD_DIR] [RUNS] [frames|switches|all]   (one line per measurement)
+set -u
 build=${1:-build}
 runs=${2:-3}
+parts=${3:-all}
 src=$(cd "$(dirname "$0")/.." && pwd)
 raytex=$(cd "$build" && pwd)/raytex
 export VK_ICD_FILENAMES=${VK_ICD_FILENAMES:-/usr/share/vulkan/icd.d/lvp_icd.x86_64.json}
@@ -29,6 +31,7 @@ sed -e 's|^    aSolidChecker;|    // aSolidChecker;|' -e 's|^    // aMarble;|   
   "$src/scenes/textures.cfg" >"$tmp/scenes/marble.cfg"
 
 for size in 640x480 1280x720; do
+  [ "$parts" = switches ] && break
   for scene in textures marble; do
     for _ in $(seq "$runs"); do
       line=$("$raytex" view "$tmp/scenes/$scene.cfg" --width "${size%x*}" --height "${size#*x}" --frames 300 |
@@ -51,9 +54,12 @@ switches() {  # switches LABEL SETTLE_SECONDS VIEW_ARGS...: press the material k
   done
   xdotool key --window "$wid" Escape
   wait "$viewer"
-  echo "$label $(grep switches "$tmp/switch.log")"
+  echo "$label $(grep -h 'switches\|error' "$tmp/switch.log")"
 }
+# Mesa's shader cache off: the first run on a machine, when every compile is a real one.
+export MESA_SHADER_CACHE_DISABLE=true
 for _ in $(seq "$runs"); do
+  [ "$parts" = frames ] && break
   switches warm 15
   switches cold 2 --frames 1000000
 done
