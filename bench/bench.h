@@ -1,17 +1,13 @@
 // What the benchmarks share: their arguments and medians (machines are noisy).
 #pragma once
 
-#include <algorithm>
+#include "median.h"
+
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
 #include <vector>
-
-inline double median(std::vector<double> values) {
-  std::sort(values.begin(), values.end());
-  return values.empty() ? 0.0 : values[values.size() / 2];
-}
 
 struct BenchArgs {
   std::string scene;

@@ -48,12 +48,16 @@ void replaceBuffer(Renderer& r, Buffer& buffer, const T* data, size_t count, VkB
   writeBuffer(buffer, data, sizeof(T) * count);
 }
 
+// Progressive sums, one vec4 per pixel; a placeholder when not accumulating (the binding exists).
+VkDeviceSize accumulationBytes(const Renderer& r, uint32_t width, uint32_t height) {
+  return r.accumulate ? VkDeviceSize(width) * height * 16 : 16;
+}
+
 void createOutput(Renderer& r, uint32_t width, uint32_t height) {
   destroyImage(r.device, r.output);
   destroyBuffer(r.device, r.readback);
   destroyBuffer(r.device, r.accumulation);
-  r.accumulation = createBuffer(r.device, r.accumulate ? VkDeviceSize(width) * height * 16 : 16,
-                                VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+  r.accumulation = createBuffer(r.device, accumulationBytes(r, width, height), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
   r.output = createImage(r.device, width, height, 1, VK_FORMAT_R32G32B32A32_SFLOAT,
                          VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, false);
   r.readback = createBuffer(r.device, VkDeviceSize(width) * height * 16, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
@@ -168,7 +172,7 @@ void uploadScene(Renderer& r, const GpuScene& s) {
   else
     uploadImageLayers(r.device, r.images, placeholder, sizeof(placeholder));
 
-  bool accumulationFits = r.accumulation.size == (r.accumulate ? VkDeviceSize(r.width) * r.height * 16 : 16);
+  bool accumulationFits = r.accumulation.size == accumulationBytes(r, r.width, r.height);
   if (s.frame.width != r.width || s.frame.height != r.height || !r.output.image || !accumulationFits)
     createOutput(r, s.frame.width, s.frame.height);
   writeDescriptors(r);

@@ -2,6 +2,7 @@
 
 #include "gpu_scene.h"
 #include "image_io.h"
+#include "median.h"
 #include "parser.h"
 #include "renderer.h"
 #include "window.h"
@@ -222,12 +223,6 @@ bool nextPipelineToWarm(const ViewerState& state, const Renderer& renderer, cons
       if (!pipelineWarm(renderer, *key)) return true;
     }
   return false;
-}
-
-double median(std::vector<double> v) {
-  if (v.empty()) return 0.0;
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
 }
 
 double msBetween(Clock::time_point from, Clock::time_point to) {
