@@ -65,7 +65,7 @@ int main(int argc, char** argv) {
       uploadScene(r, g);
       for (const Method& m : methods) {
         for (uint32_t side : sides) {
-          preparePipeline(r, {g.textureKinds, OUTPUT_SHADED, m.filter, side});
+          preparePipeline(r, {g.shape, OUTPUT_SHADED, m.filter, side});
           renderFrame(r);  // warm-up: lavapipe compiles at the first dispatch
           std::vector<double> ms;
           for (int i = 0; i < runs; ++i) {

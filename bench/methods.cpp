@@ -30,7 +30,7 @@ int main(int argc, char** argv) {
     uploadScene(r, g);
     printf("%s %ux%u, median of %d warm frames\n", args.scene.c_str(), width, height, runs);
     for (const Method& m : methods) {
-      preparePipeline(r, {g.textureKinds, OUTPUT_SHADED, m.filter, m.samplesPerSide});
+      preparePipeline(r, {g.shape, OUTPUT_SHADED, m.filter, m.samplesPerSide});
       renderFrame(r);  // warm-up: lavapipe compiles at the first dispatch
       std::vector<double> ms;
       for (int i = 0; i < runs; ++i) {

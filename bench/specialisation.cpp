@@ -1,5 +1,5 @@
 // Benchmark (prints numbers, asserts nothing): a pipeline specialised to the scene's
-// texture kinds vs one with every kind compiled in, on the same scene.
+// kinds, object and light counts vs one specialised to its kinds only vs none, on one scene.
 // Usage: raytex_bench_specialisation SCENE [WIDTH HEIGHT RUNS]
 // Run with MESA_SHADER_CACHE_DISABLE=true so each pipeline is compiled for real.
 #include "common.h"
@@ -30,13 +30,17 @@ int main(int argc, char** argv) {
   try {
     Scene scene = parseSceneFile(args.scene);
     GpuScene gpuScene = buildGpuScene(scene, width, height);
-    const uint32_t allKinds = (1u << TEX_KIND_COUNT) - 1;
+    // The kernel specialised to the scene; to its texture kinds only (object and light counts
+    // read at run time); and not at all (every kind compiled in).
+    SceneShape kindsOnly;
+    kindsOnly.sphereKinds = gpuScene.shape.sphereKinds;
+    kindsOnly.planeKinds = gpuScene.shape.planeKinds;
     struct Variant {
       const char* name;
-      uint32_t kinds;
-    } variants[] = {{"specialised", gpuScene.textureKinds}, {"all kinds", allKinds}};
+      SceneShape shape;
+    } variants[] = {{"scene", gpuScene.shape}, {"kinds only", kindsOnly}, {"none", SceneShape{}}};
     printf("%s %ux%u, %d runs, medians in ms\n", args.scene.c_str(), width, height, runs);
-    printf("%-12s %10s %14s %10s\n", "pipeline", "create", "first frame", "frame");
+    printf("%-12s %10s %14s %10s\n", "specialised", "create", "first frame", "frame");
     for (const Variant& v : variants) {
       std::vector<double> create, first, frame;
       for (int run = 0; run < runs; ++run) {
@@ -44,7 +48,7 @@ int main(int argc, char** argv) {
         createRenderer(r, {});
         uploadScene(r, gpuScene);
         Clock::time_point t = Clock::now();
-        preparePipeline(r, {v.kinds, OUTPUT_SHADED, FILTER_POINT, 1});
+        preparePipeline(r, {v.shape, OUTPUT_SHADED, FILTER_POINT, 1});
         create.push_back(msSince(t));
         t = Clock::now();
         renderFrame(r);  // lavapipe finishes compiling at the first dispatch

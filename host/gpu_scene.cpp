@@ -61,6 +61,20 @@ uint32_t usedTextureKinds(const Scene& scene) {
   return mask;
 }
 
+SceneShape sceneShape(const Scene& scene) {
+  Material fallback = defaultMaterial();
+  auto kindBit = [&](int m) { return 1u << uint32_t(materialAt(scene, m, fallback).texture.kind); };
+  auto count = [](size_t n) { return n <= MAX_SPECIALISED_COUNT ? uint32_t(n) : COUNT_FROM_FRAME; };
+  SceneShape shape;
+  shape.sphereKinds = shape.planeKinds = 0;
+  for (const Sphere& s : scene.spheres) shape.sphereKinds |= kindBit(s.material);
+  for (const Plane& p : scene.planes) shape.planeKinds |= kindBit(p.material);
+  shape.sphereCount = count(scene.spheres.size());
+  shape.planeCount = count(scene.planes.size());
+  shape.lightCount = count(scene.lights.size());
+  return shape;
+}
+
 gpu::Frame cameraFrame(const Camera& camera, uint32_t width, uint32_t height) {
   glm::dvec3 forward = glm::normalize(camera.lookat - camera.eye);
   glm::dvec3 right = glm::normalize(glm::cross(forward, camera.up));
@@ -185,7 +199,7 @@ GpuScene buildGpuScene(const Scene& scene, uint32_t width, uint32_t height, bool
     g.materials.push_back(packMaterial(material, layer));
     packedKinds |= 1u << uint32_t(material.texture.kind);
   }
-  g.textureKinds = usedTextureKinds(scene);
+  g.shape = sceneShape(scene);
 
   g.materialIndex = materialIndex;
   packCamera(g, scene, width, height);

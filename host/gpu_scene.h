@@ -10,6 +10,21 @@
 #include <map>
 #include <vector>
 
+// What a trace kernel is specialised to in a scene (the scene's SPEC_* constants of common.h).
+// The defaults are the unspecialised kernel: every kind, counts read from Frame.
+struct SceneShape {
+  uint32_t sphereKinds = ~0u;  // bit (1 << TEX_*) per kind on a sphere
+  uint32_t planeKinds = ~0u;   // ... on a plane
+  uint32_t sphereCount = COUNT_FROM_FRAME;  // the count if at most MAX_SPECIALISED_COUNT
+  uint32_t planeCount = COUNT_FROM_FRAME;
+  uint32_t lightCount = COUNT_FROM_FRAME;
+  uint32_t kinds() const { return sphereKinds | planeKinds; }
+  bool operator==(const SceneShape& o) const {
+    return sphereKinds == o.sphereKinds && planeKinds == o.planeKinds && sphereCount == o.sphereCount &&
+           planeCount == o.planeCount && lightCount == o.lightCount;
+  }
+};
+
 struct GpuScene {
   gpu::Frame frame{};
   std::vector<gpu::Sphere> spheres;
@@ -17,7 +32,7 @@ struct GpuScene {
   std::vector<gpu::Material> materials;  // those referenced by objects (or all: allMaterials)
   std::vector<gpu::Light> lights;
   gpu::NoiseTable noise{};
-  uint32_t textureKinds = 0;  // bit (1 << TEX_*) per kind in use: the specialisation mask
+  SceneShape shape;  // the kinds in use and the counts: what the kernel is specialised to
   std::map<int, uint32_t> materialIndex;  // Scene material (-1: the default) -> index in materials
   // Image textures in use, all resampled to one size: layer i is material imageLayer i.
   int imageWidth = 1, imageHeight = 1, imageLayers = 0;
@@ -31,7 +46,7 @@ struct GpuScene {
 
 // mipmaps: build the images' mip chains (only the box-filtered kernel reads them; 11 ms for
 // earth.jpg). allMaterials: pack every material the scene defines, not only those its objects
-// use, so that objects can switch material with packCamera alone (the viewer); textureKinds
+// use, so that objects can switch material with packCamera alone (the viewer); shape
 // still holds only the kinds in use. Throws SceneError (with the texture's file location) if
 // an image cannot be loaded. width, height: output size in pixels.
 GpuScene buildGpuScene(const Scene& scene, uint32_t width, uint32_t height, bool mipmaps = true,
@@ -48,3 +63,6 @@ gpu::Frame cameraFrame(const Camera& camera, uint32_t width, uint32_t height);
 
 // Bit mask of TEX_* kinds used by the scene's objects.
 uint32_t usedTextureKinds(const Scene& scene);
+
+// The scene's kinds per shape and its counts (those over MAX_SPECIALISED_COUNT: COUNT_FROM_FRAME).
+SceneShape sceneShape(const Scene& scene);

@@ -86,7 +86,7 @@ int runRender(const RenderOptions& options) {
     deviceMs = msSince(t);
     uploadScene(renderer, gpuScene);
     uploadMs = msSince(t);
-    preparePipeline(renderer, {gpuScene.textureKinds, OUTPUT_SHADED,
+    preparePipeline(renderer, {gpuScene.shape, OUTPUT_SHADED,
                                uint32_t(job.filterBox ? FILTER_BOX : FILTER_POINT), job.samplesPerSide});
     pipelineMs = msSince(t);
     renderFrame(renderer);

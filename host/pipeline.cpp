@@ -53,7 +53,11 @@ VkPipeline createTracePipeline(const Device& device, VkPipelineLayout layout, co
   VK_CHECK(vkCreateShaderModule(device.device, &moduleInfo, nullptr, &module));
 
   const VkSpecializationMapEntry entries[] = {
-      {SPEC_TEXTURE_KINDS, offsetof(PipelineKey, textureKinds), sizeof(uint32_t)},
+      {SPEC_SPHERE_TEXTURE_KINDS, offsetof(PipelineKey, shape.sphereKinds), sizeof(uint32_t)},
+      {SPEC_PLANE_TEXTURE_KINDS, offsetof(PipelineKey, shape.planeKinds), sizeof(uint32_t)},
+      {SPEC_SPHERE_COUNT, offsetof(PipelineKey, shape.sphereCount), sizeof(uint32_t)},
+      {SPEC_PLANE_COUNT, offsetof(PipelineKey, shape.planeCount), sizeof(uint32_t)},
+      {SPEC_LIGHT_COUNT, offsetof(PipelineKey, shape.lightCount), sizeof(uint32_t)},
       {SPEC_OUTPUT_MODE, offsetof(PipelineKey, outputMode), sizeof(uint32_t)},
       {SPEC_SAMPLES_PER_SIDE, offsetof(PipelineKey, samplesPerSide), sizeof(uint32_t)},
       {SPEC_PROGRESSIVE, offsetof(PipelineKey, progressive), sizeof(VkBool32)},

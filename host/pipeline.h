@@ -2,6 +2,7 @@
 #pragma once
 
 #include "device.h"
+#include "gpu_scene.h"
 
 #include <cstdint>
 
@@ -10,13 +11,13 @@ VkDescriptorSetLayout createTraceSetLayout(const Device& device);
 
 // What a trace pipeline is specialised to (the SPEC_* constants of common.h).
 struct PipelineKey {
-  uint32_t textureKinds = 0;     // TEX_* bit mask: absent kinds are compiled out
+  SceneShape shape;              // kinds per shape (absent ones compiled out), counts
   uint32_t outputMode = 0;       // OUTPUT_*
   uint32_t textureFilter = 0;    // FILTER_*: selects the kernel's build variant
   uint32_t samplesPerSide = 1;   // N x N samples per pixel
   uint32_t progressive = 0;      // 1: one sample per dispatch, accumulated (SPEC_PROGRESSIVE)
   bool operator==(const PipelineKey& o) const {
-    return textureKinds == o.textureKinds && outputMode == o.outputMode &&
+    return shape == o.shape && outputMode == o.outputMode &&
            textureFilter == o.textureFilter && samplesPerSide == o.samplesPerSide &&
            progressive == o.progressive;
   }

@@ -203,7 +203,7 @@ std::string title(const ViewerState& state, uint32_t samples, uint32_t target, d
 
 // The pipeline that renders `scene` progressively with the job's settings.
 PipelineKey viewerKey(const Scene& scene, const RenderJob& job) {
-  return {usedTextureKinds(scene), OUTPUT_SHADED, uint32_t(job.filterBox ? FILTER_BOX : FILTER_POINT),
+  return {sceneShape(scene), OUTPUT_SHADED, uint32_t(job.filterBox ? FILTER_BOX : FILTER_POINT),
           job.samplesPerSide, 1};
 }
 

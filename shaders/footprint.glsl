@@ -31,7 +31,7 @@ vec3 solidWidth(Footprint f) { return min(max(abs(f.dsdx), abs(f.dsdy)), vec3(FO
 TexCoord texCoordNear(Hit hit, vec3 p, vec3 dp) {
   if (hit.kind == HIT_PLANE) return planeTexCoord(planes[hit.index], p + dp);
   vec4 cr = spheres[hit.index].centerRadius;
-  return sphereTexCoord(normalize(p + dp - cr.xyz));
+  return sphereTexCoord(normalize(p + dp - cr.xyz), SPHERE_LAT_LONG);
 }
 
 // Texture-space derivatives of a surface step dp at the hit.

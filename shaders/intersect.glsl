@@ -37,11 +37,11 @@ float intersectPlane(vec3 o, vec3 dir, vec4 normalDistance, float tMin, float tM
 
 Hit closestHit(vec3 o, vec3 d) {
   Hit hit = Hit(T_MAX, HIT_NONE, 0u);
-  for (uint i = 0u; i < frame.sphereCount; ++i) {
+  for (uint i = 0u; i < sphereCount(); ++i) {
     float t = intersectSphere(o, d, spheres[i].centerRadius, 0.0, hit.t);
     if (t > 0.0) hit = Hit(t, HIT_SPHERE, i);
   }
-  for (uint i = 0u; i < frame.planeCount; ++i) {
+  for (uint i = 0u; i < planeCount(); ++i) {
     float t = intersectPlane(o, d, planes[i].normalDistance, 0.0, hit.t);
     if (t > 0.0) hit = Hit(t, HIT_PLANE, i);
   }
@@ -50,9 +50,9 @@ Hit closestHit(vec3 o, vec3 d) {
 
 // True if anything lies on the segment from o along unit d before distance tMax.
 bool occluded(vec3 o, vec3 d, float tMax) {
-  for (uint i = 0u; i < frame.sphereCount; ++i)
+  for (uint i = 0u; i < sphereCount(); ++i)
     if (intersectSphere(o, d, spheres[i].centerRadius, 0.0, tMax) > 0.0) return true;
-  for (uint i = 0u; i < frame.planeCount; ++i)
+  for (uint i = 0u; i < planeCount(); ++i)
     if (intersectPlane(o, d, planes[i].normalDistance, 0.0, tMax) > 0.0) return true;
   return false;
 }

@@ -42,12 +42,16 @@ TexCoord planeTexCoord(Plane pl, vec3 p) {
 // (no clamp needed). Measured on lavapipe: its asin is off by up to 2e-4 rad for
 // |n_y| > 0.5 (0.13 texel of a 1024-row image, visible at sharp image edges); the
 // atan form agrees with the double asin of host/mapping.cpp to ~1e-7.
-TexCoord sphereTexCoord(vec3 n) {
-  float phi = (n.x == 0.0 && n.z == 0.0) ? 0.0 : atan(n.z, n.x);
-  float theta = atan(n.y, length(n.xz));
+// latLong false (a constant: no sphere's kind reads uv) leaves uv at 0 and skips the atans.
+TexCoord sphereTexCoord(vec3 n, bool latLong) {
   TexCoord tc;
-  tc.uv = vec2((phi + float(MAPPING_PI)) / float(2.0 * MAPPING_PI),
-               (theta + float(0.5 * MAPPING_PI)) / float(MAPPING_PI));
+  tc.uv = vec2(0.0);
+  if (latLong) {
+    float phi = (n.x == 0.0 && n.z == 0.0) ? 0.0 : atan(n.z, n.x);
+    float theta = atan(n.y, length(n.xz));
+    tc.uv = vec2((phi + float(MAPPING_PI)) / float(2.0 * MAPPING_PI),
+                 (theta + float(0.5 * MAPPING_PI)) / float(MAPPING_PI));
+  }
   tc.tile = vec2(0.0);
   tc.solid = (n + 1.0) * 0.5;
   tc.clampV = true;

@@ -18,7 +18,7 @@ Surface surfaceAt(Hit hit, vec3 o, vec3 d) {
     vec3 toHit = o + hit.t * d - sp.centerRadius.xyz;
     vec3 outward = dot(toHit, toHit) > 0.0 ? normalize(toHit) : -d;
     s.p = sp.centerRadius.xyz + sp.centerRadius.w * outward;
-    s.tc = sphereTexCoord(outward);  // the mapping uses the outward normal, inside or out
+    s.tc = sphereTexCoord(outward, SPHERE_LAT_LONG);  // the mapping uses the outward normal, inside or out
     s.n = outward;
     s.material = sp.material;
   } else {
@@ -62,7 +62,7 @@ vec3 shade(Surface s, Material m, vec3 albedo, vec3 toEye) {
   bool textured = m.textureKind != TEX_NONE;
   vec3 color = frame.ambientLight.rgb * m.ambient.rgb * (textured ? albedo : vec3(1.0));
   vec3 origin = offsetOrigin(s.p, s.n);
-  for (uint i = 0u; i < frame.lightCount; ++i) {
+  for (uint i = 0u; i < lightCount(); ++i) {
     vec3 toLight = lights[i].position.xyz - s.p;
     float dist = length(toLight);
     if (!(dist > 0.0)) continue;

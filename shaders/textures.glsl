@@ -5,7 +5,7 @@
 //
 // Needs (declared by the including kernel, after common.h, noise.glsl, mapping.glsl, and
 // footprint.glsl when RAYTEX_FILTER_BOX is defined):
-//   layout(constant_id = SPEC_TEXTURE_KINDS) const uint TEXTURE_KINDS;  // bit (1u << TEX_*)
+//   const uint TEXTURE_KINDS;  // bit (1u << TEX_*): the kinds on any shape (spec constants)
 //   layout(binding = BINDING_IMAGES) uniform sampler2DArray images;
 // Every kind's code sits behind its TEXTURE_KINDS bit, so a pipeline specialised
 // for a scene keeps only the kinds it uses (a checker-only scene has no noise code).

@@ -10,8 +10,14 @@
 
 layout(local_size_x = WORKGROUP_X, local_size_y = WORKGROUP_Y) in;
 
-// Specialisation: the texture kinds present (absent kinds compile out) and the output.
-layout(constant_id = SPEC_TEXTURE_KINDS) const uint TEXTURE_KINDS = 0xFFFFFFFFu;
+// Specialisation: the texture kinds on each shape (absent kinds compile out), the object and
+// light counts, and the output. The defaults are the unspecialised kernel.
+layout(constant_id = SPEC_SPHERE_TEXTURE_KINDS) const uint SPHERE_TEXTURE_KINDS = 0xFFFFFFFFu;
+layout(constant_id = SPEC_PLANE_TEXTURE_KINDS) const uint PLANE_TEXTURE_KINDS = 0xFFFFFFFFu;
+const uint TEXTURE_KINDS = SPHERE_TEXTURE_KINDS | PLANE_TEXTURE_KINDS;
+layout(constant_id = SPEC_SPHERE_COUNT) const uint SPHERE_COUNT = COUNT_FROM_FRAME;
+layout(constant_id = SPEC_PLANE_COUNT) const uint PLANE_COUNT = COUNT_FROM_FRAME;
+layout(constant_id = SPEC_LIGHT_COUNT) const uint LIGHT_COUNT = COUNT_FROM_FRAME;
 layout(constant_id = SPEC_OUTPUT_MODE) const uint OUTPUT_MODE = OUTPUT_SHADED;
 // A constant, not a uniform: around the whole shading code, a loop with a runtime bound
 // doubled the 1-sample frame time on lavapipe (119 -> 216 ms at 1080p).
@@ -27,6 +33,16 @@ layout(std430, binding = BINDING_LIGHTS) readonly buffer LightBlock { Light ligh
 layout(std140, binding = BINDING_NOISE) uniform NoiseBlock { NoiseTable noiseTable; };
 layout(binding = BINDING_IMAGES) uniform sampler2DArray images;
 layout(std430, binding = BINDING_ACCUMULATION) buffer AccumulationBlock { vec4 accumulation[]; };
+
+// Loop bounds: constants where the kernel is specialised to the scene's counts.
+uint sphereCount() { return SPHERE_COUNT == COUNT_FROM_FRAME ? frame.sphereCount : SPHERE_COUNT; }
+uint planeCount() { return PLANE_COUNT == COUNT_FROM_FRAME ? frame.planeCount : PLANE_COUNT; }
+uint lightCount() { return LIGHT_COUNT == COUNT_FROM_FRAME ? frame.lightCount : LIGHT_COUNT; }
+// The sphere's latitude/longitude (two atans per hit) only for kinds that read it, and the
+// coordinate debug output. (No || here: glslang turns it into branches that are invalid
+// SPIR-V outside a function.)
+const bool SPHERE_LAT_LONG = ((SPHERE_TEXTURE_KINDS & ((1u << TEX_IMAGE) | (1u << TEX_CHECKER))) |
+                              uint(OUTPUT_MODE == OUTPUT_COORDS)) != 0u;
 
 #include "noise.glsl"
 #include "mapping.glsl"

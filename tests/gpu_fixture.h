@@ -31,12 +31,14 @@ class RenderTest : public ::testing::Test {
     EXPECT_EQ(renderer_->device.validationErrors, errorsBefore_) << "Vulkan validation errors";
   }
 
-  // Renders and returns linear RGBA floats (a copy: the readback buffer is reused).
+  // Renders and returns linear RGBA floats (a copy: the readback buffer is reused). The
+  // kernel is specialised to the scene, or to `shape` if given.
   std::vector<float> render(const Scene& scene, uint32_t width, uint32_t height, uint32_t mode,
-                            uint32_t samplesPerSide = 1, uint32_t filter = FILTER_POINT) {
+                            uint32_t samplesPerSide = 1, uint32_t filter = FILTER_POINT,
+                            const SceneShape* shape = nullptr) {
     GpuScene gpuScene = buildGpuScene(scene, width, height);
     uploadScene(*renderer_, gpuScene);
-    preparePipeline(*renderer_, {gpuScene.textureKinds, mode, filter, samplesPerSide});
+    preparePipeline(*renderer_, {shape ? *shape : gpuScene.shape, mode, filter, samplesPerSide});
     renderFrame(*renderer_);
     readbackFrame(*renderer_);
     const float* pixels = framePixels(*renderer_);

@@ -17,7 +17,7 @@ TEST(GpuScene, CourseSceneUploadsOnlyTheMaterialsItUses) {
   ASSERT_EQ(scene.materials.size(), 8u);
   GpuScene g = buildGpuScene(scene, 64, 48);
   EXPECT_EQ(g.materials.size(), 2u);  // aSolidChecker and aChecker of eight defined
-  EXPECT_EQ(g.textureKinds, (1u << TEX_SOLID_CHECKER) | (1u << TEX_CHECKER));
+  EXPECT_EQ(g.shape.kinds(), (1u << TEX_SOLID_CHECKER) | (1u << TEX_CHECKER));
   EXPECT_EQ(g.imageLayers, 0);  // anImage is defined but unused: earth.jpg is not loaded
   EXPECT_TRUE(g.imagePixels.empty());
   ASSERT_EQ(g.spheres.size(), 1u);
@@ -46,11 +46,29 @@ TEST(GpuScene, CourseSceneUploadsOnlyTheMaterialsItUses) {
   EXPECT_EQ(g.noise.perm[1], glm::uvec4(0));
 }
 
+TEST(GpuScene, ShapeHasTheKindsPerShapeAndTheCountsUpToTheLimit) {
+  Scene scene = parseSceneFile(kSourceDir + "/scenes/textures.cfg");
+  SceneShape shape = buildGpuScene(scene, 8, 8).shape;
+  EXPECT_EQ(shape.sphereKinds, 1u << TEX_SOLID_CHECKER);
+  EXPECT_EQ(shape.planeKinds, 1u << TEX_CHECKER);
+  EXPECT_EQ(shape.sphereCount, 1u);
+  EXPECT_EQ(shape.planeCount, 1u);
+  EXPECT_EQ(shape.lightCount, 1u);
+  std::string text = "material m { texture = wood { }; }\n";
+  for (int i = 0; i <= MAX_SPECIALISED_COUNT; ++i) text += "sphere { center = (0,0,0); radius = 1; m; }\n";
+  shape = sceneShape(parseSceneText(text, "many.cfg"));
+  EXPECT_EQ(shape.sphereKinds, 1u << TEX_WOOD);
+  EXPECT_EQ(shape.planeKinds, 0u);  // no planes
+  EXPECT_EQ(shape.sphereCount, COUNT_FROM_FRAME);  // MAX_SPECIALISED_COUNT + 1: a loop
+  EXPECT_EQ(shape.planeCount, 0u);
+  EXPECT_EQ(shape.lightCount, 0u);
+}
+
 TEST(GpuScene, NoiseTableIsFilledWhenANoiseKindIsUsed) {
   Scene scene = parseSceneText(
       "material m { texture = marble { }; }\nsphere { center = (0,0,0); radius = 1; m; }\n", "t.cfg");
   GpuScene g = buildGpuScene(scene, 8, 8);
-  EXPECT_EQ(g.textureKinds, 1u << TEX_MARBLE);
+  EXPECT_EQ(g.shape.kinds(), 1u << TEX_MARBLE);
   uint32_t sum = 0;
   for (int i = 0; i < 256; ++i) sum += g.noise.perm[i >> 2][i & 3];
   EXPECT_EQ(sum, 255u * 256u / 2u);  // a permutation of 0..255
@@ -86,7 +104,7 @@ TEST(GpuScene, ObjectsWithoutMaterialGetTheDefault) {
   GpuScene g = buildGpuScene(scene, 8, 8);
   ASSERT_EQ(g.materials.size(), 1u);
   EXPECT_EQ(g.materials[0].textureKind, uint32_t(TEX_NONE));
-  EXPECT_EQ(g.textureKinds, 1u << TEX_NONE);
+  EXPECT_EQ(g.shape.kinds(), 1u << TEX_NONE);
 }
 
 TEST(GpuScene, CameraFrameFollowsFovAndAspect) {
@@ -163,7 +181,7 @@ TEST(GpuScene, AllMaterialsPacksUnusedOnesButSpecialisesToTheUsed) {
   GpuScene all = buildGpuScene(scene, 8, 8, false, true);
   EXPECT_EQ(used.materials.size(), 2u);
   EXPECT_EQ(all.materials.size(), scene.materials.size());
-  EXPECT_EQ(all.textureKinds, used.textureKinds);
+  EXPECT_EQ(all.shape, used.shape);
   EXPECT_EQ(all.imageLayers, 1);  // anImage's earth.jpg, ready for a switch
   EXPECT_EQ(used.imageLayers, 0);
 }

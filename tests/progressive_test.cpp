@@ -37,7 +37,7 @@ class ProgressiveTest : public RenderTest {
     renderer_->accumulate = true;
     GpuScene gpuScene = buildGpuScene(scene, kWidth, kHeight);
     uploadScene(*renderer_, gpuScene);
-    preparePipeline(*renderer_, {gpuScene.textureKinds, OUTPUT_SHADED, filter, n, 1});
+    preparePipeline(*renderer_, {gpuScene.shape, OUTPUT_SHADED, filter, n, 1});
     std::vector<float> image;
     for (uint32_t i = 0; i < n * n; ++i) {
       renderSample(*renderer_, i);
