@@ -27,6 +27,7 @@ VkDescriptorSetLayout createTraceSetLayout(const Device& device) {
       binding(BINDING_NOISE, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER),
       binding(BINDING_IMAGES, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER),
       binding(BINDING_ACCUMULATION, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER),
+      binding(BINDING_DISPLAY, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
   };
   VkDescriptorSetLayoutCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
   info.bindingCount = uint32_t(std::size(bindings));

@@ -10,6 +10,7 @@ namespace {
 
 void writeDescriptors(Renderer& r) {
   VkDescriptorImageInfo outputInfo{VK_NULL_HANDLE, r.output.view, VK_IMAGE_LAYOUT_GENERAL};
+  VkDescriptorImageInfo displayInfo{VK_NULL_HANDLE, r.display.view, VK_IMAGE_LAYOUT_GENERAL};
   VkDescriptorImageInfo imagesInfo{r.sampler, r.images.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
   auto bufferInfo = [](const Buffer& b) { return VkDescriptorBufferInfo{b.buffer, 0, VK_WHOLE_SIZE}; };
   const VkDescriptorBufferInfo buffers[] = {bufferInfo(r.frame),     bufferInfo(r.spheres),
@@ -29,8 +30,9 @@ void writeDescriptors(Renderer& r) {
     writes.push_back(w);
     return &writes.back();
   };
-  writes.reserve(std::size(buffers) + 2);  // pointers into it stay valid
+  writes.reserve(std::size(buffers) + 3);  // pointers into it stay valid
   write(BINDING_OUTPUT, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE)->pImageInfo = &outputInfo;
+  write(BINDING_DISPLAY, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE)->pImageInfo = &displayInfo;
   write(BINDING_IMAGES, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER)->pImageInfo = &imagesInfo;
   for (size_t i = 0; i < std::size(buffers); ++i) {
     bool uniform = bufferBindings[i] == BINDING_FRAME || bufferBindings[i] == BINDING_NOISE || bufferBindings[i] == BINDING_MATERIALS;
@@ -57,14 +59,18 @@ void createOutput(Renderer& r, uint32_t width, uint32_t height) {
   destroyImage(r.device, r.output);
   destroyBuffer(r.device, r.readback);
   destroyBuffer(r.device, r.accumulation);
+  destroyImage(r.device, r.display);
   r.accumulation = createBuffer(r.device, accumulationBytes(r, width, height), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+  // Display pixels (progressive only; else 1 x 1, the binding exists).
+  r.display = createImage(r.device, r.accumulate ? width : 1, r.accumulate ? height : 1, 1, VK_FORMAT_R32_UINT,
+                          VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, false);
   r.output = createImage(r.device, width, height, 1, VK_FORMAT_R32G32B32A32_SFLOAT,
                          VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, false);
   r.readback = createBuffer(r.device, VkDeviceSize(width) * height * 16, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
   VkCommandBuffer cmd = beginCommands(r.device);
-  imageBarrier(cmd, r.output.image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL, 0,
-               VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT,
-               VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
+  for (VkImage image : {r.output.image, r.display.image})
+    imageBarrier(cmd, image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL, 0, VK_ACCESS_SHADER_WRITE_BIT,
+                 VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
   submitAndWait(r.device, cmd);
   r.width = width;
   r.height = height;
@@ -81,7 +87,7 @@ void createRenderer(Renderer& r, const DeviceOptions& options) {
   layoutInfo.pSetLayouts = &r.setLayout;
   VK_CHECK(vkCreatePipelineLayout(r.device.device, &layoutInfo, nullptr, &r.pipelineLayout));
 
-  const VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1},
+  const VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 2},
                                         {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 3},
                                         {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 5},
                                         {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1}};
@@ -132,6 +138,7 @@ void destroyRenderer(Renderer& r) {
                       &r.accumulation})
       destroyBuffer(r.device, *b);
     destroyImage(r.device, r.output);
+    destroyImage(r.device, r.display);
     destroyImage(r.device, r.images);
     if (r.sampler) vkDestroySampler(d, r.sampler, nullptr);
     if (r.timestamps) vkDestroyQueryPool(d, r.timestamps, nullptr);
@@ -252,10 +259,30 @@ void renderSample(Renderer& r, uint32_t index) {
   gpu::Frame* frame = static_cast<gpu::Frame*>(r.frame.data);
   frame->sampleIndex = index;
   frame->sampleWeight = 1.0f / float(index + 1);
+  r.sampleWeight = frame->sampleWeight;
+  frame->displayBgra = r.displayBgra;
   renderFrame(r);
 }
 
 void readbackFrame(Renderer& r) {
+  if (r.pipelineKey.progressive) {
+    // The progressive kernel writes no float image (trace.comp.glsl): the mean is the running
+    // sum times the last sample's weight, the kernel's own float multiply.
+    VkCommandBuffer cmd = beginCommands(r.device);
+    VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+    barrier.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
+    barrier.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &barrier, 0,
+                         nullptr, 0, nullptr);
+    submitAndWait(r.device, cmd);
+    const float* sums = static_cast<const float*>(r.accumulation.data);
+    float* means = static_cast<float*>(r.readback.data);
+    for (size_t i = 0; i < size_t(r.width) * r.height; ++i) {
+      for (size_t c = 0; c < 3; ++c) means[4 * i + c] = sums[4 * i + c] * r.sampleWeight;
+      means[4 * i + 3] = 1.0f;
+    }
+    return;
+  }
   VkCommandBuffer cmd = beginCommands(r.device);
   // The kernel's writes (an earlier, completed submission) become visible to the copy.
   imageBarrier(cmd, r.output.image, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,

@@ -30,7 +30,10 @@ struct Renderer {
   Buffer frame, spheres, planes, materials, lights, noise;
   Buffer readback;  // width * height * 4 floats
   Buffer accumulation;  // progressive sums, width * height * 4 floats when `accumulate`
+  Image display;        // r32ui: progressive means as 8-bit sRGB pixels (1 x 1 unless `accumulate`)
   bool accumulate = false;  // set before uploadScene to render progressively (the viewer)
+  uint32_t displayBgra = 0;  // 1: `display` in B, G, R, A byte order (Frame.displayBgra)
+  float sampleWeight = 1.0f;  // of the last renderSample: readbackFrame's mean = sum * weight
   Image output;     // rgba32f storage image
   Image images;     // sampler2DArray of image textures (1x1 placeholder when none)
   uint32_t width = 0, height = 0;
@@ -60,9 +63,9 @@ void warmPipeline(Renderer& renderer, const PipelineKey& key);
 // Dispatches the kernel over the whole image; waits. Sets lastFrameMs.
 void renderFrame(Renderer& renderer);
 
-// Progressive pipelines: adds sample `index` (0 restarts) of the N x N grid and writes the mean
-// of samples 0..index to the output image. After N * N of them the output is bit-identical to
-// renderFrame with the N x N pipeline.
+// Progressive pipelines: adds sample `index` (0 restarts) of the N x N grid to the running sums
+// and writes their mean as 8-bit sRGB to `display`; readbackFrame gives the mean in float.
+// After N * N of them it is bit-identical to renderFrame's image with the N x N pipeline.
 void renderSample(Renderer& renderer, uint32_t index);
 
 // Copies the rendered image into the host-visible readback buffer; waits.

@@ -285,6 +285,7 @@ int runViewer(const RenderOptions& options) {
     deviceOptions.presentSupport = windowPresentSupport;
     createRenderer(renderer, deviceOptions);
     createSwapchain(window, renderer.device);
+    renderer.displayBgra = windowBgra(window);
 
     const uint32_t target = job.samplesPerSide * job.samplesPerSide;
     uint32_t samples = 0;  // accumulated in the image on screen
@@ -346,7 +347,10 @@ int runViewer(const RenderOptions& options) {
       if (render || state.refresh) {
         state.refresh = false;
         auto presentStart = Clock::now();
-        if (!presentImage(window, renderer.device, renderer.output)) createSwapchain(window, renderer.device);
+        if (!presentPixels(window, renderer.device, renderer.display)) {
+          createSwapchain(window, renderer.device);
+          renderer.displayBgra = windowBgra(window);
+        }
         auto now = Clock::now();
         if (state.switchedAt) stats.switchMs.push_back(msBetween(*state.switchedAt, now));
         state.switchedAt.reset();

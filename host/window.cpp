@@ -20,16 +20,13 @@ VkSurfaceFormatKHR chooseFormat(const Device& d, VkSurfaceKHR surface) {
   VK_CHECK(vkGetPhysicalDeviceSurfaceFormatsKHR(d.physical, surface, &count, nullptr));
   std::vector<VkSurfaceFormatKHR> formats(count);
   VK_CHECK(vkGetPhysicalDeviceSurfaceFormatsKHR(d.physical, surface, &count, formats.data()));
-  auto blitDst = [&](VkFormat f) {
-    VkFormatProperties props;
-    vkGetPhysicalDeviceFormatProperties(d.physical, f, &props);
-    return (props.optimalTilingFeatures & VK_FORMAT_FEATURE_BLIT_DST_BIT) != 0;
-  };
-  for (const VkSurfaceFormatKHR& f : formats)
-    if ((f.format == VK_FORMAT_B8G8R8A8_SRGB || f.format == VK_FORMAT_R8G8B8A8_SRGB) && blitDst(f.format)) return f;
-  for (const VkSurfaceFormatKHR& f : formats)
-    if (blitDst(f.format)) return f;
-  throw VulkanError("the display offers no swapchain format that can be a blit destination");
+  // The kernel writes sRGB-encoded bytes; an _SRGB format stores them as they are, and so does
+  // _UNORM with the sRGB colour space (the display decodes both the same way).
+  for (VkFormat wanted : {VK_FORMAT_B8G8R8A8_SRGB, VK_FORMAT_R8G8B8A8_SRGB, VK_FORMAT_B8G8R8A8_UNORM,
+                          VK_FORMAT_R8G8B8A8_UNORM})
+    for (const VkSurfaceFormatKHR& f : formats)
+      if (f.format == wanted && f.colorSpace == VK_COLOR_SPACE_SRGB_NONLINEAR_KHR) return f;
+  throw VulkanError("the display offers no 8-bit RGBA or BGRA sRGB swapchain format");
 }
 
 }  // namespace
@@ -132,31 +129,33 @@ void destroyWindow(Window& w, const Device& d) {
   w = Window{};
 }
 
-bool presentImage(Window& w, const Device& d, const Image& image) {
+bool windowBgra(const Window& w) {
+  return w.format == VK_FORMAT_B8G8R8A8_SRGB || w.format == VK_FORMAT_B8G8R8A8_UNORM;
+}
+
+bool presentPixels(Window& w, const Device& d, const Image& pixels) {
   uint32_t index = 0;
   VkResult result = vkAcquireNextImageKHR(d.device, w.swapchain, UINT64_MAX, w.acquired, VK_NULL_HANDLE, &index);
   if (result == VK_ERROR_OUT_OF_DATE_KHR) return false;
   if (result != VK_SUBOPTIMAL_KHR) VK_CHECK(result);
 
+  // A plain copy: on lavapipe a blit converting the float image took most of the present time.
+  // Sizes differ only for the frame after a resize, before the swapchain follows it.
   VkCommandBuffer cmd = beginCommands(d);
   VkImage target = w.images[index];
   imageBarrier(cmd, target, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 0,
                VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT);
-  imageBarrier(cmd, image.image, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-               VK_ACCESS_SHADER_WRITE_BIT, VK_ACCESS_TRANSFER_READ_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
-               VK_PIPELINE_STAGE_TRANSFER_BIT);
-  VkImageBlit blit{};
-  blit.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-  blit.srcOffsets[1] = {int32_t(image.width), int32_t(image.height), 1};
-  blit.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-  blit.dstOffsets[1] = {int32_t(w.extent.width), int32_t(w.extent.height), 1};
-  vkCmdBlitImage(cmd, image.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, target,
-                 VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &blit, VK_FILTER_NEAREST);
+  imageBarrier(cmd, pixels.image, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL, VK_ACCESS_SHADER_WRITE_BIT,
+               VK_ACCESS_TRANSFER_READ_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT);
+  VkImageCopy region{};  // r32ui and the 8-bit formats are in the same 32-bit compatibility class
+  region.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+  region.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+  region.extent = {std::min(pixels.width, w.extent.width), std::min(pixels.height, w.extent.height), 1};
+  vkCmdCopyImage(cmd, pixels.image, VK_IMAGE_LAYOUT_GENERAL, target, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+  imageBarrier(cmd, pixels.image, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL, VK_ACCESS_TRANSFER_READ_BIT,
+               VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
   imageBarrier(cmd, target, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR,
                VK_ACCESS_TRANSFER_WRITE_BIT, 0, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT);
-  imageBarrier(cmd, image.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_GENERAL,
-               VK_ACCESS_TRANSFER_READ_BIT, VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
-               VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
   submitAndWait(d, cmd, w.acquired, VK_PIPELINE_STAGE_TRANSFER_BIT, w.presentReady);
 
   VkPresentInfoKHR present{VK_STRUCTURE_TYPE_PRESENT_INFO_KHR};

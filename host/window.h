@@ -1,4 +1,4 @@
-// A GLFW window with a Vulkan swapchain. The kernel's image is blitted into it: no
+// A GLFW window with a Vulkan swapchain. The kernel's display pixels are copied into it: no
 // graphics pipeline. GLFW 3.3 API only.
 #pragma once
 
@@ -37,7 +37,11 @@ void destroyWindow(Window& window, const Device& device);
 // The framebuffer size in pixels (0 x 0 while minimised).
 VkExtent2D framebufferSize(const Window& window);
 
-// Blits `image` (rgba32f, GENERAL layout) to the next swapchain image, scaled to it, and
+// Whether the swapchain's bytes are B, G, R, A (else R, G, B, A): Renderer::displayBgra.
+bool windowBgra(const Window& window);
+
+// Copies `pixels` (the renderer's display image, GENERAL layout: 8-bit sRGB pixels in the
+// swapchain's byte order, written by a completed dispatch) to the next swapchain image and
 // presents. Returns false when the swapchain no longer matches the window (resize): call
 // createSwapchain again.
-bool presentImage(Window& window, const Device& device, const Image& image);
+bool presentPixels(Window& window, const Device& device, const Image& pixels);

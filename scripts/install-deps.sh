@@ -10,5 +10,5 @@ $SUDO apt-get install -y -qq --no-install-recommends \
   build-essential cmake ninja-build pkg-config \
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers glslang-tools \
   libglm-dev libglfw3-dev libstb-dev libgtest-dev \
-  xvfb xdotool >/dev/null  # the viewer's test runs under a virtual X display
+  xvfb xdotool x11-apps >/dev/null  # the viewer's test: a virtual X display, keys, xwd captures
 echo "raytex dependencies installed"

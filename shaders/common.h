@@ -30,6 +30,9 @@ using uvec4 = glm::uvec4;
 #define BINDING_IMAGES 7     // sampler2DArray, one layer per image texture
 #define BINDING_ACCUMULATION 8  // storage vec4[width * height]: running sums of progressive
                                 // rendering (a 16-byte placeholder when not accumulating)
+#define BINDING_DISPLAY 9  // r32ui storage image: progressive rendering's mean as 8-bit sRGB in the
+                           // swapchain's byte order (Frame.displayBgra), copied to the window
+                           // without a blit (1 x 1 when not accumulating)
 
 // Materials one render can use (the uniform block's size: 256 * 112 bytes = 28 KiB).
 #define MAX_MATERIALS 256
@@ -100,7 +103,7 @@ struct Frame {
   uint lightCount;
   uint sampleIndex;    // progressive: which of the N x N samples this dispatch adds (row-major)
   float sampleWeight;  // progressive: 1 / (sampleIndex + 1), the mean's weight (host-computed)
-  uint pad0;
+  uint displayBgra;    // progressive: 1 packs BINDING_DISPLAY as B, G, R, A bytes, 0 as R, G, B, A
 };
 
 struct Sphere {

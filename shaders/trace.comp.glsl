@@ -33,6 +33,7 @@ layout(std430, binding = BINDING_LIGHTS) readonly buffer LightBlock { Light ligh
 layout(std140, binding = BINDING_NOISE) uniform NoiseBlock { NoiseTable noiseTable; };
 layout(binding = BINDING_IMAGES) uniform sampler2DArray images;
 layout(std430, binding = BINDING_ACCUMULATION) buffer AccumulationBlock { vec4 accumulation[]; };
+layout(binding = BINDING_DISPLAY, r32ui) uniform writeonly uimage2D displayImage;
 
 // Loop bounds: constants where the kernel is specialised to the scene's counts.
 uint sphereCount() { return SPHERE_COUNT == COUNT_FROM_FRAME ? frame.sphereCount : SPHERE_COUNT; }
@@ -125,6 +126,18 @@ vec4 debugOutput(vec3 origin, vec2 film) {
 }
 #endif
 
+// A linear colour as the window shows it: sRGB-encoded 8-bit channels packed in the
+// swapchain's byte order (a copy, not a blit, then puts it on screen).
+uint displayPixel(vec3 linear) {
+  vec3 c = clamp(linear, 0.0, 1.0);
+  // The sRGB curve from square roots (Taylor's fit, within half a step of 8 bits above the
+  // linear toe), cheaper than pow on lavapipe; the PNG path (encodeSrgb) is exact.
+  vec3 s1 = sqrt(c), s2 = sqrt(s1), s3 = sqrt(s2);
+  vec3 curve = 0.662002687 * s1 + 0.684122060 * s2 - 0.323583601 * s3 - 0.0225411470 * c;
+  vec3 srgb = mix(12.92 * c, curve, greaterThan(c, vec3(0.0031308)));
+  return packUnorm4x8(frame.displayBgra != 0u ? vec4(srgb.bgr, 1.0) : vec4(srgb, 1.0));
+}
+
 void main() {
   uvec2 pixel = gl_GlobalInvocationID.xy;
   if (pixel.x >= frame.width || pixel.y >= frame.height) return;
@@ -134,7 +147,9 @@ void main() {
 #else
   // N x N stratified samples at the centres of the sub-pixel cells, box filtered. Progressive
   // rendering adds the same samples one per dispatch, in the same order and the same float
-  // operations, so its last mean is bit-identical to the single-dispatch image.
+  // operations, so its last mean is bit-identical to the single-dispatch image. It writes the
+  // running sum and the display pixel, not the float image: readbackFrame multiplies the sum
+  // by the same weight on the host (one float multiply: the same bits).
   const uint n = SAMPLES_PER_SIDE;
   vec4 result;
   if (PROGRESSIVE) {
@@ -143,7 +158,8 @@ void main() {
     vec3 sum = frame.sampleIndex == 0u ? vec3(0.0) : accumulation[i].rgb;
     sum += radiance(origin, vec2(pixel) + (vec2(cell) + 0.5) / float(n), 1.0 / float(n));
     accumulation[i] = vec4(sum, 1.0);
-    result = vec4(sum * frame.sampleWeight, 1.0);
+    imageStore(displayImage, ivec2(pixel), uvec4(displayPixel(sum * frame.sampleWeight)));
+    return;
   } else {
     vec3 sum = vec3(0.0);
     for (uint sy = 0u; sy < n; ++sy)

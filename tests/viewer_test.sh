@@ -2,12 +2,13 @@
 # The viewer under Xvfb (a virtual X display) with lavapipe: keys switch the sphere's and
 # the plane's materials (read back from the window title), and the screenshot key writes
 # the same PNG as raytex render for the same scene and size.
-# Usage: viewer_test.sh RAYTEX SOURCE_DIR
+# Usage: viewer_test.sh RAYTEX SOURCE_DIR XWD_DIFF
 set -u
 raytex=$1
 src=$2
-for tool in Xvfb xdotool; do
-  command -v $tool >/dev/null || { echo "FAIL: $tool not installed (apt-get install xvfb xdotool)"; exit 1; }
+xwdDiff=$3
+for tool in Xvfb xdotool xwd; do
+  command -v $tool >/dev/null || { echo "FAIL: $tool not installed (apt-get install xvfb xdotool x11-apps)"; exit 1; }
 done
 tmp=$(mktemp -d)
 display=""
@@ -72,6 +73,10 @@ sleep 0.5
 check reset-screenshot waitShot
 check reset-restores-view cmp -s "$tmp/shot.png" "$tmp/first.png"
 cp "$tmp/first.png" "$tmp/shot.png"
+# What the window shows once converged: the kernel's 8-bit display pixels (an approximate
+# sRGB curve, so within 1 of the PNG), compared with the headless render below.
+check window-converged waitTitle '| 64/64 samples'
+xwd -id "$wid" -silent >"$tmp/window.xwd"
 xdotool key --window "$wid" Escape
 for _ in $(seq 100); do kill -0 "$viewer" 2>/dev/null || break; sleep 0.1; done
 wait "$viewer"
@@ -86,6 +91,7 @@ sed -e 's|^    aSolidChecker;|    // aSolidChecker;|' -e 's|^    // anImage;|   
 "$raytex" render "$src/scenes/.viewer-test.cfg" -o "$tmp/render.png" --width 320 --height 240 --spp 64
 rm -f "$src/scenes/.viewer-test.cfg"
 check screenshot-equals-render cmp -s "$tmp/shot.png" "$tmp/render.png"
+check window-shows-render "$xwdDiff" "$tmp/window.xwd" "$tmp/render.png" 1
 
 # Hot reload: saving the scene file updates the window; a parse error is printed with its
 # file:line:col and the last good scene stays.
