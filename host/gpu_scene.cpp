@@ -54,13 +54,6 @@ gpu::Material packMaterial(const Material& m, uint32_t imageLayer) {
 
 }  // namespace
 
-uint32_t usedTextureKinds(const Scene& scene) {
-  Material fallback = defaultMaterial();
-  uint32_t mask = 0;
-  for (int m : usedMaterials(scene)) mask |= 1u << uint32_t(materialAt(scene, m, fallback).texture.kind);
-  return mask;
-}
-
 SceneShape sceneShape(const Scene& scene) {
   Material fallback = defaultMaterial();
   auto kindBit = [&](int m) { return 1u << uint32_t(materialAt(scene, m, fallback).texture.kind); };

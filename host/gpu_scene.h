@@ -61,8 +61,6 @@ void packCamera(GpuScene& gpuScene, const Scene& scene, uint32_t width, uint32_t
 // field of view and aspect. Used by packCamera; exposed for its tests.
 gpu::Frame cameraFrame(const Camera& camera, uint32_t width, uint32_t height);
 
-// Bit mask of TEX_* kinds used by the scene's objects.
-uint32_t usedTextureKinds(const Scene& scene);
-
-// The scene's kinds per shape and its counts (those over MAX_SPECIALISED_COUNT: COUNT_FROM_FRAME).
+// The scene's kinds per shape (kinds(): all in use) and its counts (those over
+// MAX_SPECIALISED_COUNT: COUNT_FROM_FRAME).
 SceneShape sceneShape(const Scene& scene);

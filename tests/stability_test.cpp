@@ -890,7 +890,7 @@ TEST_F(StabilityTest, AllScenesFiniteWhenSupersampledAndFiltered) {
   for (NamedScene& s : degenerateScenes()) scenes.push_back(std::move(s));
   // Scenes with the same texture kinds share a pipeline: render them together.
   std::stable_sort(scenes.begin(), scenes.end(), [](const NamedScene& a, const NamedScene& b) {
-    return usedTextureKinds(a.scene) < usedTextureKinds(b.scene);
+    return sceneShape(a.scene).kinds() < sceneShape(b.scene).kinds();
   });
 
   struct Config {
