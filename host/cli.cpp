@@ -27,6 +27,8 @@ const char* usageText() {
          "                    [--filter point|box] [--reference] [--device N] [--stats] [--validate]\n"
          "       raytex view SCENE [-o shot.png] [--width W] [--height H] [--spp N] [--filter point|box]\n"
          "                  [--device N] [--frames N] [--stats] [--validate]\n"
+         "       raytex bench SCENE [--width W] [--height H] [--spp N] [--filter point|box] [--runs N]\n"
+         "                   [--json] [-o out.png] [--device N] [--validate]\n"
          "       raytex devices\n"
          "       raytex --help | --version\n"
          "\n"
@@ -58,6 +60,12 @@ const char* usageText() {
          "  --frames N         quit after N frames (accumulation restarts; for benchmarks)\n"
          "  --stats            print frame times and material-switch times when quitting\n"
          "  Saving the scene file reloads it; the title shows the materials, samples and ms/frame.\n"
+         "bench    Render SCENE --runs times (default 5), each a whole render from parse to PNG, and\n"
+         "         print the median time of each phase, the GPU time per frame (timestamps, one\n"
+         "         extra frame per run), Mpixel/s and Mray/s (primary + shadow rays). Writes the PNG\n"
+         "         only with -o.\n"
+         "  --runs N           renders to take medians over (1 to 1000)\n"
+         "  --json             print one JSON object (keys in docs/performance.md) instead of a table\n"
          "devices  List the Vulkan devices and their indices.\n"
          "\n"
          "Exit codes: 0 success, 1 runtime failure (Vulkan, output file), 2 bad input (usage, scene).\n"
@@ -87,11 +95,14 @@ bool parseCli(const std::vector<std::string>& args, CliArgs* out, std::string* e
     }
     return true;
   }
-  if (command != "render" && command != "view") {
+  if (command != "render" && command != "view" && command != "bench") {
     *error = "unknown command '" + command + "' (try raytex --help)";
     return false;
   }
-  out->command = command == "view" ? CliCommand::View : CliCommand::Render;
+  out->command = command == "view"    ? CliCommand::View
+                 : command == "bench" ? CliCommand::Bench
+                                      : CliCommand::Render;
+  bool outputGiven = false;
   RenderOptions& r = out->render;
   for (size_t i = 1; i < args.size(); ++i) {
     const std::string& a = args[i];
@@ -109,6 +120,7 @@ bool parseCli(const std::vector<std::string>& args, CliArgs* out, std::string* e
       return true;
     } else if (a == "-o" || a == "--output") {
       if (!value(&r.output)) return false;
+      outputGiven = true;
       if (r.output.empty()) {
         *error = a + " needs a file name";
         return false;
@@ -144,7 +156,11 @@ bool parseCli(const std::vector<std::string>& args, CliArgs* out, std::string* e
       r.filter = v == "box";
     } else if (a == "--frames" && out->command == CliCommand::View) {
       if (!value(&v) || !parseUint(a, v, 1, 1000000, &r.frames, error)) return false;
-    } else if (a == "--reference" && out->command == CliCommand::View) {
+    } else if (a == "--runs" && out->command == CliCommand::Bench) {
+      if (!value(&v) || !parseUint(a, v, 1, 1000, &out->bench.runs, error)) return false;
+    } else if (a == "--json" && out->command == CliCommand::Bench) {
+      out->bench.json = true;
+    } else if (a == "--reference" && out->command != CliCommand::Render) {
       *error = "--reference renders on the CPU to a file: use it with raytex render";
       return false;
     } else if (a == "--reference") {
@@ -164,9 +180,10 @@ bool parseCli(const std::vector<std::string>& args, CliArgs* out, std::string* e
     }
   }
   if (r.scene.empty()) {
-    *error = "render needs a scene file (e.g. raytex render scenes/textures.cfg -o out.png)";
+    *error = command + " needs a scene file (e.g. raytex " + command + " scenes/textures.cfg)";
     return false;
   }
+  if (out->command == CliCommand::Bench && !outputGiven) r.output.clear();
   const char* env = getenv("RAYTEX_VALIDATION");
   if (env && std::string(env) == "1") r.validate = true;
   return true;

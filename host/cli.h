@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-enum class CliCommand { Help, Version, Render, View, Devices };
+enum class CliCommand { Help, Version, Render, View, Bench, Devices };
 
 struct RenderOptions {
   std::string scene;
@@ -23,9 +23,15 @@ struct RenderOptions {
   uint32_t frames = 0;    // view --frames N: quit after N frames (accumulation restarting)
 };
 
+struct BenchOptions {
+  uint32_t runs = 5;  // --runs N: whole renders, each from parse to PNG; medians reported
+  bool json = false;  // --json: one JSON object instead of the table
+};
+
 struct CliArgs {
   CliCommand command = CliCommand::Help;
-  RenderOptions render;
+  RenderOptions render;  // render, view and bench (bench writes -o only when given)
+  BenchOptions bench;
 };
 
 // Largest accepted width or height, and pixel count (the float image and its readback

@@ -41,6 +41,12 @@ double linearToSrgb(double linear);   // linear in [0, 1]
 // is either the complete new image or untouched. Throws std::runtime_error naming the path.
 void writePngAtomic(const std::string& path, const ImageRGBA8& image);
 
+// The PNG file's bytes (RGB, 8 bits; alpha dropped); empty if encoding failed.
+std::vector<uint8_t> encodePng(const ImageRGBA8& image);
+
+// Writes `bytes` to `path` atomically, as writePngAtomic. Throws std::runtime_error.
+void writeFileAtomic(const std::string& path, const std::vector<uint8_t>& bytes);
+
 struct ImageDiff {
   int maxError = 0;        // largest channel difference, 0..255 (RGB only)
   double meanError = 0.0;  // mean channel difference (RGB only)

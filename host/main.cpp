@@ -1,10 +1,11 @@
 // raytex: texture-mapping ray tracer on Vulkan compute. Subcommands in cli.cpp's usage.
 #include "cli.h"
-#include "gpu_scene.h"
+#include "benchmark.h"
+#include "device.h"
+#include "headless.h"
 #include "image_io.h"
 #include "parser.h"
 #include "reference_render.h"
-#include "renderer.h"
 #include "viewer.h"
 
 #include <chrono>
@@ -57,10 +58,19 @@ int runReference(const RenderOptions& options, const RenderJob& job, const Scene
 }
 
 int runRender(const RenderOptions& options) {
+  if (!options.reference) {
+    HeadlessRender render;
+    int rc = renderHeadless(options, 0, true, &render);
+    const PhaseTimes& t = render.times;
+    if (rc == 0 && options.stats)
+      printf("device %.1f ms | parse %.1f ms | upload %.1f ms | pipeline %.1f ms | render %.1f ms | "
+             "readback %.1f ms | encode %.1f ms | %ux%u, %u spp\n",
+             t.device, t.parse, t.upload, t.pipeline, t.firstDispatch, t.readback, t.encode, render.job.width,
+             render.job.height, render.job.samplesPerPixel);
+    return rc;
+  }
   Clock::time_point t = Clock::now();
-  // Parse (and, for Vulkan, load images) before touching Vulkan: bad input fails fast.
   Scene scene;
-  GpuScene gpuScene;
   RenderJob job;
   try {
     scene = parseSceneFile(options.scene);
@@ -69,50 +79,11 @@ int runRender(const RenderOptions& options) {
       fprintf(stderr, "raytex: %s\n", error.c_str());
       return 2;
     }
-    if (!options.reference) gpuScene = buildGpuScene(scene, job.width, job.height, job.filterBox);
   } catch (const SceneError& e) {
     fprintf(stderr, "%s\n", e.what());
     return 2;
   }
-  double parseMs = msSince(t);
-  if (options.reference) return runReference(options, job, scene, t, parseMs);
-
-  Renderer renderer;
-  double deviceMs = 0, uploadMs = 0, pipelineMs = 0, renderMs = 0, readbackMs = 0;
-  ImageRGBA8 image;
-  size_t nonFinite = 0;
-  try {
-    createRenderer(renderer, {options.device, options.validate});
-    deviceMs = msSince(t);
-    uploadScene(renderer, gpuScene);
-    uploadMs = msSince(t);
-    preparePipeline(renderer, {gpuScene.shape, OUTPUT_SHADED,
-                               uint32_t(job.filterBox ? FILTER_BOX : FILTER_POINT), job.samplesPerSide});
-    pipelineMs = msSince(t);
-    renderFrame(renderer);
-    renderMs = msSince(t);
-    readbackFrame(renderer);
-    image = encodeSrgb(framePixels(renderer), int(job.width), int(job.height), &nonFinite);
-    readbackMs = msSince(t);
-    int validationErrors = renderer.device.validationErrors;
-    destroyRenderer(renderer);
-    if (validationErrors > 0) {
-      fprintf(stderr, "raytex: %d Vulkan validation error(s)\n", validationErrors);
-      return 1;
-    }
-  } catch (const std::exception& e) {
-    fprintf(stderr, "raytex: %s\n", e.what());
-    destroyRenderer(renderer);
-    return 1;
-  }
-  if (int rc = writeImage(options, image, nonFinite)) return rc;
-  double encodeMs = msSince(t);
-  if (options.stats)
-    printf("device %.1f ms | parse %.1f ms | upload %.1f ms | pipeline %.1f ms | render %.1f ms | "
-           "readback %.1f ms | encode %.1f ms | %ux%u, %u spp\n",
-           deviceMs, parseMs, uploadMs, pipelineMs, renderMs, readbackMs, encodeMs, job.width, job.height,
-           job.samplesPerPixel);
-  return 0;
+  return runReference(options, job, scene, t, msSince(t));
 }
 
 }  // namespace
@@ -139,6 +110,8 @@ int main(int argc, char** argv) {
       return runRender(cli.render);
     case CliCommand::View:
       return runViewer(cli.render);
+    case CliCommand::Bench:
+      return runBench(cli.render, cli.bench);
   }
   return 1;
 }

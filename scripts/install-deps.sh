@@ -9,6 +9,6 @@ $SUDO apt-get update -qq
 $SUDO apt-get install -y -qq --no-install-recommends \
   build-essential cmake ninja-build pkg-config \
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers glslang-tools \
-  libglm-dev libglfw3-dev libstb-dev libgtest-dev \
+  libglm-dev libglfw3-dev libstb-dev zlib1g-dev libgtest-dev \
   xvfb xdotool x11-apps >/dev/null  # the viewer's test: a virtual X display, keys, xwd captures
 echo "raytex dependencies installed"

@@ -76,6 +76,22 @@ sed 's|^camera {|render { width = 9000; height = 9000; }\ncamera {|' \
 expect render-block-too-big 2 '9000x9000 exceeds the limit' -- "$raytex" render "$src/scenes/.cli-test-render.cfg" -o "$tmp/big.png"
 rm -f "$src/scenes/.cli-test-render.cfg"
 
+# bench: usage errors, the table, JSON that parses with every phase, and no file unless -o.
+expect bench-runs 2 '--runs expects an integer from 1 to 1000' -- "$raytex" bench s.cfg --runs 0
+expect bench-no-scene 2 'bench needs a scene file' -- "$raytex" bench --json
+expect render-json 2 "unknown option '--json'" -- "$raytex" render s.cfg --json
+expect bench-scene-error 2 "^$tmp/typo.cfg:3:3: " -- "$raytex" bench "$tmp/typo.cfg"
+expect bench-table 0 'frame \(GPU timestamps\) +[0-9.]+' -- "$raytex" bench "$src/scenes/textures.cfg" \
+  --width 32 --height 24 --runs 2
+(cd "$tmp" && "$raytex" bench "$src/scenes/textures.cfg" --width 32 --height 24 --spp 4 --runs 1 --json \
+  >"$tmp/bench.json")
+check bench-json cmake -D JSON_FILE="$tmp/bench.json" -D WIDTH=32 -D HEIGHT=24 -D SPP=4 \
+  -P "$src/tests/bench_json_check.cmake"
+check bench-no-output test ! -e "$tmp/out.png"
+expect bench-output 0 'end to end' -- "$raytex" bench "$src/scenes/textures.cfg" --width 32 --height 24 --runs 1 \
+  -o "$tmp/bench.png"
+check bench-output-png test "$(od -An -tu1 -j16 -N8 "$tmp/bench.png" | tr -s ' ')" = " 0 0 0 32 0 0 0 24"
+
 # An existing output is replaced whole, never left half-written, on success and failure.
 cp "$tmp/ok.png" "$tmp/keep.png"
 expect keep-on-error 2 'typo.cfg:3:3' -- "$raytex" render "$tmp/typo.cfg" -o "$tmp/keep.png"

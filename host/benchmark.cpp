@@ -1,0 +1,118 @@
+#include "benchmark.h"
+
+#include "headless.h"
+#include "median.h"
+#include "parser.h"
+#include "reference.h"
+
+#include <glm/geometric.hpp>
+
+#include <cstdio>
+#include <string>
+#include <vector>
+
+RayCount countRays(const Scene& scene, uint32_t width, uint32_t height, uint32_t samplesPerPixel) {
+  RayCount count;
+  count.primary = uint64_t(width) * height * samplesPerPixel;
+  const glm::dvec3 eye = scene.camera.eye;
+  uint64_t shadow = 0;
+  for (uint32_t y = 0; y < height; ++y) {
+    for (uint32_t x = 0; x < width; ++x) {
+      glm::dvec3 dir = referenceRayDirection(scene.camera, int(width), int(height), int(x), int(y));
+      ReferenceHit hit = referenceClosestHit(scene, eye, dir);
+      if (hit.kind == 0) continue;
+      glm::dvec3 n = glm::dot(hit.n, dir) > 0.0 ? -hit.n : hit.n;  // facing the viewer
+      for (const Light& light : scene.lights) {
+        glm::dvec3 toLight = light.position - hit.p;
+        if (glm::dot(toLight, toLight) > 0.0 && glm::dot(n, toLight) > 0.0) ++shadow;
+      }
+    }
+  }
+  count.shadow = shadow * samplesPerPixel;
+  return count;
+}
+
+namespace {
+
+struct Medians {
+  double device, parse, upload, pipeline, firstDispatch, frame, readback, encode, endToEnd;
+};
+
+// A JSON string literal (scene paths and device names may hold quotes or backslashes).
+std::string jsonString(const std::string& s) {
+  std::string out = "\"";
+  for (char c : s) {
+    if (c == '"' || c == '\\') out += '\\';
+    if (static_cast<unsigned char>(c) < 0x20) {
+      char buf[8];
+      snprintf(buf, sizeof(buf), "\\u%04x", c);
+      out += buf;
+    } else {
+      out += c;
+    }
+  }
+  return out + "\"";
+}
+
+}  // namespace
+
+int runBench(const RenderOptions& options, const BenchOptions& bench) {
+  std::vector<PhaseTimes> runs;
+  std::vector<double> frames;
+  HeadlessRender last;
+  for (uint32_t run = 0; run < bench.runs; ++run) {
+    last = HeadlessRender{};
+    // One frame after the first: the first dispatch includes lavapipe's compile.
+    if (int rc = renderHeadless(options, 1, !options.output.empty(), &last)) return rc;
+    runs.push_back(last.times);
+    frames.insert(frames.end(), last.frameMs.begin(), last.frameMs.end());
+  }
+  auto med = [&](double PhaseTimes::*phase) {
+    std::vector<double> v;
+    for (const PhaseTimes& t : runs) v.push_back(t.*phase);
+    return median(v);
+  };
+  std::vector<double> ends;
+  for (const PhaseTimes& t : runs) ends.push_back(t.endToEnd());
+  Medians m{med(&PhaseTimes::device),   med(&PhaseTimes::parse),         med(&PhaseTimes::upload),
+            med(&PhaseTimes::pipeline), med(&PhaseTimes::firstDispatch), median(frames),
+            med(&PhaseTimes::readback), med(&PhaseTimes::encode),        median(ends)};
+
+  const RenderJob& job = last.job;
+  RayCount rays = countRays(parseSceneFile(options.scene), job.width, job.height, job.samplesPerPixel);
+  double frameSeconds = m.frame * 1e-3;
+  double mpixels = frameSeconds > 0 ? double(job.width) * job.height / frameSeconds * 1e-6 : 0.0;
+  double mrays = frameSeconds > 0 ? double(rays.primary + rays.shadow) / frameSeconds * 1e-6 : 0.0;
+
+  if (bench.json) {
+    printf("{\"scene\": %s, \"device\": %s, \"width\": %u, \"height\": %u, \"spp\": %u, \"filter\": \"%s\", "
+           "\"runs\": %u,\n \"median_ms\": {\"device\": %.3f, \"parse\": %.3f, \"upload\": %.3f, "
+           "\"pipeline\": %.3f, \"first_dispatch\": %.3f, \"frame\": %.3f, \"readback\": %.3f, "
+           "\"encode\": %.3f, \"end_to_end\": %.3f},\n \"mpixel_per_s\": %.3f, \"mray_per_s\": %.3f, "
+           "\"rays_per_frame\": {\"primary\": %llu, \"shadow\": %llu}}\n",
+           jsonString(options.scene).c_str(), jsonString(last.deviceName).c_str(), job.width, job.height,
+           job.samplesPerPixel, job.filterBox ? "box" : "point", bench.runs, m.device, m.parse, m.upload,
+           m.pipeline, m.firstDispatch, m.frame, m.readback, m.encode, m.endToEnd, mpixels, mrays,
+           static_cast<unsigned long long>(rays.primary), static_cast<unsigned long long>(rays.shadow));
+    return 0;
+  }
+  printf("%s: %ux%u, %u spp, %s filter, on %s\n", options.scene.c_str(), job.width, job.height,
+         job.samplesPerPixel, job.filterBox ? "box" : "point", last.deviceName.c_str());
+  printf("medians of %u runs, ms\n", bench.runs);
+  const struct {
+    const char* name;
+    double ms;
+  } rows[] = {{"device creation", m.device},
+              {"parse", m.parse},
+              {"upload", m.upload},
+              {"pipeline creation", m.pipeline},
+              {"first dispatch (compile)", m.firstDispatch},
+              {"readback", m.readback},
+              {"PNG encode", m.encode},
+              {"end to end", m.endToEnd},
+              {"frame (GPU timestamps)", m.frame}};
+  for (const auto& row : rows) printf("  %-26s %9.1f\n", row.name, row.ms);
+  printf("%.1f Mpixel/s, %.1f Mray/s (%llu primary + %llu shadow rays per frame)\n", mpixels, mrays,
+         static_cast<unsigned long long>(rays.primary), static_cast<unsigned long long>(rays.shadow));
+  return 0;
+}

@@ -1,0 +1,33 @@
+// One headless render, phase by phase: what `raytex render` runs and `raytex bench` times.
+#pragma once
+
+#include "cli.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+// Wall-clock milliseconds of each phase, in the order they run.
+struct PhaseTimes {
+  double parse = 0;          // scene file, images, GPU structs (before any Vulkan)
+  double device = 0;         // instance and device creation, resources
+  double upload = 0;         // scene buffers and image textures
+  double pipeline = 0;       // the kernel specialised to the scene (vkCreateComputePipelines)
+  double firstDispatch = 0;  // the first frame, wall clock: lavapipe compiles at the first dispatch
+  double readback = 0;       // image to host and sRGB 8-bit
+  double encode = 0;         // PNG encode, and the file write when there is an output
+  double endToEnd() const { return parse + device + upload + pipeline + firstDispatch + readback + encode; }
+};
+
+struct HeadlessRender {
+  RenderJob job;
+  PhaseTimes times;
+  std::vector<double> frameMs;  // GPU time (timestamps) of the frames after the first
+  std::string deviceName;
+  size_t nonFinite = 0;  // colour values written as black
+};
+
+// Renders options.scene on Vulkan, then `extraFrames` more frames of the same image (timed),
+// and writes the PNG to options.output unless `writeFile` is false. Returns the exit code
+// (0; 1 runtime failure; 2 bad input), with a one-line message on stderr when not 0.
+int renderHeadless(const RenderOptions& options, uint32_t extraFrames, bool writeFile, HeadlessRender* out);
