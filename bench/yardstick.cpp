@@ -23,7 +23,7 @@
 #include "noise.h"
 #include "parser.h"
 #include "renderer.h"
-// Generated at build time by glslangValidator --vn (CMakeLists.txt, add_yardstick_kernel).
+// Generated at build time by glslangValidator --vn (CMakeLists.txt, add_spirv).
 #include "yardstick_checker_spv.h"
 #include "yardstick_marble_2x2_spv.h"
 #include "yardstick_marble_spv.h"

@@ -1,7 +1,7 @@
 // Yardstick 2: the course scene with aChecker on the sphere (raytex's textures.cfg with
 // "aChecker;" in the sphere block): a 2D checker on the plane, the latitude/longitude checker on
 // the sphere (2 x 2 checks over the map), Phong and one shadow ray per hit. Scene constants are
-// hard-coded (course_scene.glsl). Compiled at build time (CMakeLists.txt, add_yardstick_kernel).
+// hard-coded (course_scene.glsl). Compiled at build time (CMakeLists.txt, add_spirv).
 #version 460
 #extension GL_GOOGLE_include_directive : require
 

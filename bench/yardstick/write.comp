@@ -1,7 +1,7 @@
 // Yardstick 1, the write-only floor: stores one constant colour per pixel (the course scene's
 // background, so the image equals raytex's render of the scene with its objects removed). The
 // cost of launching 8x8 workgroups over the image and writing an rgba32f pixel: no kernel that
-// writes the image can be faster. Compiled at build time (CMakeLists.txt, add_yardstick_kernel).
+// writes the image can be faster. Compiled at build time (CMakeLists.txt, add_spirv).
 #version 460
 
 layout(local_size_x = 8, local_size_y = 8) in;
