@@ -1,0 +1,36 @@
+// Renders FRAMES frames of SCENE after a first one (which compiles the kernel), and nothing
+// else: bench/instructions.sh runs it under callgrind twice and takes the difference, the
+// instructions the kernel executes per frame. Unlike times, the count does not move with the
+// load of a shared machine, so kernel variants can be compared exactly.
+// Usage: raytex_bench_frames SCENE WIDTH HEIGHT FRAMES [SAMPLES_PER_SIDE]
+#include "gpu_scene.h"
+#include "parser.h"
+#include "renderer.h"
+
+#include <cstdio>
+#include <cstdlib>
+
+int main(int argc, char** argv) {
+  if (argc < 5) {
+    fprintf(stderr, "usage: %s SCENE WIDTH HEIGHT FRAMES [SAMPLES_PER_SIDE]\n", argv[0]);
+    return 2;
+  }
+  uint32_t width = uint32_t(atoi(argv[2])), height = uint32_t(atoi(argv[3]));
+  int frames = atoi(argv[4]);
+  uint32_t side = argc > 5 ? uint32_t(atoi(argv[5])) : 1;
+  Renderer r;
+  try {
+    GpuScene scene = buildGpuScene(parseSceneFile(argv[1]), width, height);
+    createRenderer(r, {});
+    uploadScene(r, scene);
+    preparePipeline(r, {scene.shape, OUTPUT_SHADED, FILTER_POINT, side});
+    renderFrame(r);
+    for (int i = 0; i < frames; ++i) renderFrame(r);
+  } catch (const std::exception& e) {
+    fprintf(stderr, "%s\n", e.what());
+    destroyRenderer(r);
+    return 1;
+  }
+  destroyRenderer(r);
+  return 0;
+}
