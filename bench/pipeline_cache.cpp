@@ -22,11 +22,6 @@ int main(int argc, char** argv) {
     layoutInfo.pSetLayouts = &setLayout;
     VkPipelineLayout layout = VK_NULL_HANDLE;
     VK_CHECK(vkCreatePipelineLayout(d.device, &layoutInfo, nullptr, &layout));
-    VkShaderModuleCreateInfo moduleInfo{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
-    moduleInfo.codeSize = sizeof(trace_point_spv);
-    moduleInfo.pCode = trace_point_spv;
-    VkShaderModule module = VK_NULL_HANDLE;
-    VK_CHECK(vkCreateShaderModule(d.device, &moduleInfo, nullptr, &module));
     printf("%s\n", d.properties.deviceName);
     std::vector<char> data;
     for (int pass = 0; pass < 3; ++pass) {
@@ -35,13 +30,8 @@ int main(int argc, char** argv) {
       cacheInfo.pInitialData = data.empty() ? nullptr : data.data();
       VkPipelineCache cache = VK_NULL_HANDLE;
       VK_CHECK(vkCreatePipelineCache(d.device, &cacheInfo, nullptr, &cache));
-      VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
-      info.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0, VK_SHADER_STAGE_COMPUTE_BIT,
-                    module, "main", nullptr};
-      info.layout = layout;
       auto start = std::chrono::steady_clock::now();
-      VkPipeline pipeline = VK_NULL_HANDLE;
-      VK_CHECK(vkCreateComputePipelines(d.device, cache, 1, &info, nullptr, &pipeline));
+      VkPipeline pipeline = createComputePipeline(d, layout, trace_point_spv, sizeof(trace_point_spv), nullptr, 0, cache);
       double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
       size_t size = 0;
       VK_CHECK(vkGetPipelineCacheData(d.device, cache, &size, nullptr));
@@ -52,7 +42,6 @@ int main(int argc, char** argv) {
       vkDestroyPipeline(d.device, pipeline, nullptr);
       vkDestroyPipelineCache(d.device, cache, nullptr);
     }
-    vkDestroyShaderModule(d.device, module, nullptr);
     vkDestroyPipelineLayout(d.device, layout, nullptr);
     vkDestroyDescriptorSetLayout(d.device, setLayout, nullptr);
   } catch (const std::exception& e) {

@@ -62,25 +62,6 @@ struct Yardstick {
   uint32_t width = 0, height = 0;
 };
 
-VkPipeline createKernel(const Device& device, VkPipelineLayout layout, const uint32_t* code, size_t bytes) {
-  VkShaderModuleCreateInfo moduleInfo{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
-  moduleInfo.codeSize = bytes;
-  moduleInfo.pCode = code;
-  VkShaderModule module = VK_NULL_HANDLE;
-  VK_CHECK(vkCreateShaderModule(device.device, &moduleInfo, nullptr, &module));
-  VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
-  info.stage.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
-  info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
-  info.stage.module = module;
-  info.stage.pName = "main";
-  info.layout = layout;
-  VkPipeline pipeline = VK_NULL_HANDLE;
-  VkResult result = vkCreateComputePipelines(device.device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline);
-  vkDestroyShaderModule(device.device, module, nullptr);
-  VK_CHECK(result);
-  return pipeline;
-}
-
 void createYardstick(Yardstick& y, const Device& device, uint32_t width, uint32_t height) {
   y.width = width;
   y.height = height;
@@ -318,11 +299,11 @@ int main(int argc, char** argv) {
       VkPipeline pipeline;
     };
     std::vector<Kernel> kernels = {
-        {"write", createKernel(r.device, y.pipelineLayout, yardstick_write_spv, sizeof(yardstick_write_spv))},
-        {"checker", createKernel(r.device, y.pipelineLayout, yardstick_checker_spv, sizeof(yardstick_checker_spv))},
-        {"marble", createKernel(r.device, y.pipelineLayout, yardstick_marble_spv, sizeof(yardstick_marble_spv))},
+        {"write", createComputePipeline(r.device, y.pipelineLayout, yardstick_write_spv, sizeof(yardstick_write_spv))},
+        {"checker", createComputePipeline(r.device, y.pipelineLayout, yardstick_checker_spv, sizeof(yardstick_checker_spv))},
+        {"marble", createComputePipeline(r.device, y.pipelineLayout, yardstick_marble_spv, sizeof(yardstick_marble_spv))},
         {"marble_2x2",
-         createKernel(r.device, y.pipelineLayout, yardstick_marble_2x2_spv, sizeof(yardstick_marble_2x2_spv))}};
+         createComputePipeline(r.device, y.pipelineLayout, yardstick_marble_2x2_spv, sizeof(yardstick_marble_2x2_spv))}};
 
     // The table's rows: a yardstick kernel and the raytex case doing the same work.
     struct Row {

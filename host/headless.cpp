@@ -5,26 +5,18 @@
 #include "parser.h"
 #include "renderer.h"
 
-#include <chrono>
 #include <cstdio>
 
-namespace {
-
-using Clock = std::chrono::steady_clock;
-
-// Milliseconds since `start`, and restarts it: one call per phase.
-double lap(Clock::time_point& start) {
-  Clock::time_point now = Clock::now();
+double lapMs(std::chrono::steady_clock::time_point& start) {
+  std::chrono::steady_clock::time_point now = std::chrono::steady_clock::now();
   double ms = std::chrono::duration<double, std::milli>(now - start).count();
   start = now;
   return ms;
 }
 
-}  // namespace
-
 int renderHeadless(const RenderOptions& options, uint32_t extraFrames, bool writeFile, HeadlessRender* out) {
   PhaseTimes& times = out->times;
-  Clock::time_point t = Clock::now();
+  std::chrono::steady_clock::time_point t = std::chrono::steady_clock::now();
   // Parse and load images before touching Vulkan: bad input fails fast.
   GpuScene gpuScene;
   try {
@@ -39,7 +31,7 @@ int renderHeadless(const RenderOptions& options, uint32_t extraFrames, bool writ
     fprintf(stderr, "%s\n", e.what());
     return 2;
   }
-  times.parse = lap(t);
+  times.parse = lapMs(t);
 
   const RenderJob& job = out->job;
   Renderer renderer;
@@ -47,22 +39,22 @@ int renderHeadless(const RenderOptions& options, uint32_t extraFrames, bool writ
   try {
     createRenderer(renderer, {options.device, options.validate});
     out->deviceName = renderer.device.properties.deviceName;
-    times.device = lap(t);
+    times.device = lapMs(t);
     uploadScene(renderer, gpuScene);
-    times.upload = lap(t);
+    times.upload = lapMs(t);
     preparePipeline(renderer, {gpuScene.shape, OUTPUT_SHADED, uint32_t(job.filterBox ? FILTER_BOX : FILTER_POINT),
                                job.samplesPerSide});
-    times.pipeline = lap(t);
+    times.pipeline = lapMs(t);
     renderFrame(renderer);
-    times.firstDispatch = lap(t);
+    times.firstDispatch = lapMs(t);
     for (uint32_t i = 0; i < extraFrames; ++i) {
       renderFrame(renderer);
       out->frameMs.push_back(renderer.lastFrameMs);
     }
-    t = Clock::now();  // the extra frames are not part of a render
+    t = std::chrono::steady_clock::now();  // the extra frames are not part of a render
     readbackFrame(renderer);
     image = encodeSrgb(framePixels(renderer), int(job.width), int(job.height), &out->nonFinite);
-    times.readback = lap(t);
+    times.readback = lapMs(t);
     int validationErrors = renderer.device.validationErrors;
     destroyRenderer(renderer);
     if (validationErrors > 0) {
@@ -74,7 +66,7 @@ int renderHeadless(const RenderOptions& options, uint32_t extraFrames, bool writ
     destroyRenderer(renderer);
     return 1;
   }
-  t = Clock::now();  // device teardown is not a phase
+  t = std::chrono::steady_clock::now();  // device teardown is not a phase
   if (out->nonFinite > 0)
     fprintf(stderr, "warning: %zu non-finite colour values (written as black)\n", out->nonFinite);
   std::vector<uint8_t> png = encodePng(image);
@@ -90,6 +82,6 @@ int renderHeadless(const RenderOptions& options, uint32_t extraFrames, bool writ
       return 1;
     }
   }
-  times.encode = lap(t);
+  times.encode = lapMs(t);
   return 0;
 }

@@ -3,9 +3,13 @@
 
 #include "cli.h"
 
+#include <chrono>
 #include <cstdint>
 #include <string>
 #include <vector>
+
+// Milliseconds since `start`, which it resets to now: one call per phase.
+double lapMs(std::chrono::steady_clock::time_point& start);
 
 // Wall-clock milliseconds of each phase, in the order they run.
 struct PhaseTimes {

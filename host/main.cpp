@@ -16,13 +16,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-double msSince(Clock::time_point& start) {
-  Clock::time_point now = Clock::now();
-  double ms = std::chrono::duration<double, std::milli>(now - start).count();
-  start = now;
-  return ms;
-}
-
 int writeImage(const RenderOptions& options, const ImageRGBA8& image, size_t nonFinite) {
   if (nonFinite > 0)
     fprintf(stderr, "warning: %zu non-finite colour values (written as black)\n", nonFinite);
@@ -45,12 +38,12 @@ int runReference(const RenderOptions& options, const RenderJob& job, const Scene
     fprintf(stderr, "%s\n", e.what());
     return 2;
   }
-  double renderMs = msSince(t);
+  double renderMs = lapMs(t);
   std::vector<float> rgba = referenceToRgba(reference);
   size_t nonFinite = 0;
   ImageRGBA8 image = encodeSrgb(rgba.data(), int(job.width), int(job.height), &nonFinite);
   if (int rc = writeImage(options, image, nonFinite)) return rc;
-  double encodeMs = msSince(t);
+  double encodeMs = lapMs(t);
   if (options.stats)
     printf("parse %.1f ms | reference %.1f ms | encode %.1f ms | %ux%u, %u spp\n", parseMs, renderMs,
            encodeMs, job.width, job.height, job.samplesPerPixel);
@@ -83,7 +76,7 @@ int runRender(const RenderOptions& options) {
     fprintf(stderr, "%s\n", e.what());
     return 2;
   }
-  return runReference(options, job, scene, t, msSince(t));
+  return runReference(options, job, scene, t, lapMs(t));
 }
 
 }  // namespace

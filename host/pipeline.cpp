@@ -37,21 +37,40 @@ VkDescriptorSetLayout createTraceSetLayout(const Device& device) {
   return layout;
 }
 
-VkPipeline createTracePipeline(const Device& device, VkPipelineLayout layout, const PipelineKey& key) {
+VkPipeline createComputePipeline(const Device& device, VkPipelineLayout layout, const uint32_t* code, size_t bytes,
+                                 const VkSpecializationInfo* specialization, VkPipelineCreateFlags flags,
+                                 VkPipelineCache cache) {
   VkShaderModuleCreateInfo moduleInfo{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
-  // The build variant: debug outputs, or the shaded image with point or box textures.
-  if (key.outputMode != OUTPUT_SHADED) {
-    moduleInfo.codeSize = sizeof(trace_debug_spv);
-    moduleInfo.pCode = trace_debug_spv;
-  } else if (key.textureFilter == FILTER_BOX) {
-    moduleInfo.codeSize = sizeof(trace_box_spv);
-    moduleInfo.pCode = trace_box_spv;
-  } else {
-    moduleInfo.codeSize = sizeof(trace_point_spv);
-    moduleInfo.pCode = trace_point_spv;
-  }
+  moduleInfo.codeSize = bytes;
+  moduleInfo.pCode = code;
   VkShaderModule module = VK_NULL_HANDLE;
   VK_CHECK(vkCreateShaderModule(device.device, &moduleInfo, nullptr, &module));
+  VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
+  info.flags = flags;
+  info.stage.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
+  info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
+  info.stage.module = module;
+  info.stage.pName = "main";
+  info.stage.pSpecializationInfo = specialization;
+  info.layout = layout;
+  VkPipeline pipeline = VK_NULL_HANDLE;
+  VkResult result = vkCreateComputePipelines(device.device, cache, 1, &info, nullptr, &pipeline);
+  vkDestroyShaderModule(device.device, module, nullptr);
+  VK_CHECK(result);
+  return pipeline;
+}
+
+VkPipeline createTracePipeline(const Device& device, VkPipelineLayout layout, const PipelineKey& key) {
+  // The build variant: debug outputs, or the shaded image with point or box textures.
+  const uint32_t* code = trace_point_spv;
+  size_t bytes = sizeof(trace_point_spv);
+  if (key.outputMode != OUTPUT_SHADED) {
+    code = trace_debug_spv;
+    bytes = sizeof(trace_debug_spv);
+  } else if (key.textureFilter == FILTER_BOX) {
+    code = trace_box_spv;
+    bytes = sizeof(trace_box_spv);
+  }
 
   const VkSpecializationMapEntry entries[] = {
       {SPEC_SPHERE_TEXTURE_KINDS, offsetof(PipelineKey, shape.sphereKinds), sizeof(uint32_t)},
@@ -68,18 +87,6 @@ VkPipeline createTracePipeline(const Device& device, VkPipelineLayout layout, co
   specialization.pMapEntries = entries;
   specialization.dataSize = sizeof(PipelineKey);
   specialization.pData = &key;
-
-  VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
-  info.flags = VK_PIPELINE_CREATE_DISPATCH_BASE_BIT;  // warmPipeline dispatches past the image
-  info.stage.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
-  info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
-  info.stage.module = module;
-  info.stage.pName = "main";
-  info.stage.pSpecializationInfo = &specialization;
-  info.layout = layout;
-  VkPipeline pipeline = VK_NULL_HANDLE;
-  VkResult result = vkCreateComputePipelines(device.device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline);
-  vkDestroyShaderModule(device.device, module, nullptr);
-  VK_CHECK(result);
-  return pipeline;
+  // warmPipeline dispatches past the image: the base needs VK_PIPELINE_CREATE_DISPATCH_BASE_BIT.
+  return createComputePipeline(device, layout, code, bytes, &specialization, VK_PIPELINE_CREATE_DISPATCH_BASE_BIT);
 }

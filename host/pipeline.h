@@ -24,3 +24,9 @@ struct PipelineKey {
 };
 
 VkPipeline createTracePipeline(const Device& device, VkPipelineLayout layout, const PipelineKey& key);
+
+// A compute pipeline from SPIR-V (`bytes` long), entry point main; the module is destroyed
+// once the pipeline exists. Throws VulkanError.
+VkPipeline createComputePipeline(const Device& device, VkPipelineLayout layout, const uint32_t* code, size_t bytes,
+                                 const VkSpecializationInfo* specialization = nullptr,
+                                 VkPipelineCreateFlags flags = 0, VkPipelineCache cache = VK_NULL_HANDLE);
