@@ -14,14 +14,9 @@ variants=()
 trap 'rm -f "${variants[@]}"' EXIT
 # The course scene with another material on the sphere, switched as the notes say.
 for material in aSolidChecker aMarble anImage; do
-  scene=$(mktemp scenes/.gallery-XXXXXX.cfg)  # beside textures.cfg so its #include resolves
+  scene=$(mktemp "${TMPDIR:-/tmp}/raytex-accuracy-XXXXXX.cfg")
   variants+=("$scene")
-  if [ "$material" = aSolidChecker ]; then
-    cp scenes/textures.cfg "$scene"
-  else
-    sed -e 's|^    aSolidChecker;|    // aSolidChecker;|' -e "s|^    // $material;|    $material;|" \
-      scenes/textures.cfg >"$scene"
-  fi
+  scripts/course-scene.sh "$material" >"$scene"
   scenes+=("$material=$scene")
 done
 scenes+=("horizon=scenes/horizon.cfg")

@@ -44,20 +44,10 @@ trap 'rm -rf "$tmp"' EXIT
 trap 'exit 130' INT
 trap 'exit 143' TERM
 
-# The course scene with each material on the sphere, beside a copy of texture_include.cfg and a
-# link to textures/ so that #include and the image path resolve.
+# The course scene with each material on the sphere.
 mkdir -p "$tmp/scenes"
-cp "$src/scenes/textures.cfg" "$src/scenes/texture_include.cfg" "$tmp/scenes/"
-ln -s "$src/textures" "$tmp/textures"
 for material in $materials; do
-  scene=$tmp/scenes/$material.cfg
-  case $material in
-    aSolidChecker) cp "$src/scenes/textures.cfg" "$scene" ;;
-    aChecker) sed 's|^    aSolidChecker;|    aChecker;|' "$src/scenes/textures.cfg" >"$scene" ;;
-    *) sed -e 's|^    aSolidChecker;|    // aSolidChecker;|' -e "s|^    // $material;|    $material;|" \
-         "$src/scenes/textures.cfg" >"$scene" ;;
-  esac
-  grep -q "^    $material;" "$scene" || die "could not switch the sphere to $material in scenes/textures.cfg"
+  "$src/scripts/course-scene.sh" "$material" >"$tmp/scenes/$material.cfg"
 done
 
 # One `raytex bench --json` output (stdin) -> one CSV row; checks the keys and the size.

@@ -25,10 +25,8 @@ for _ in $(seq 50); do xdotool getdisplaygeometry >/dev/null 2>&1 && break; slee
 
 # The course scene, and the same with aMarble on the sphere.
 mkdir -p "$tmp/scenes"
-cp "$src/scenes/textures.cfg" "$src/scenes/texture_include.cfg" "$tmp/scenes/"
-ln -s "$src/textures" "$tmp/textures"
-sed -e 's|^    aSolidChecker;|    // aSolidChecker;|' -e 's|^    // aMarble;|    aMarble;|' \
-  "$src/scenes/textures.cfg" >"$tmp/scenes/marble.cfg"
+"$src/scripts/course-scene.sh" aSolidChecker >"$tmp/scenes/textures.cfg"
+"$src/scripts/course-scene.sh" aMarble >"$tmp/scenes/marble.cfg"
 
 for size in 640x480 1280x720; do
   [ "$parts" = switches ] && break

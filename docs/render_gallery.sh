@@ -6,14 +6,9 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 raytex=${1:-build/raytex}
 for material in aSolidChecker aNoise aMarble aWood anImage aTurbulence aDturbulence aChecker; do
-  scene=$(mktemp scenes/.gallery-XXXXXX.cfg)  # beside textures.cfg so its #include resolves
+  scene=$(mktemp "${TMPDIR:-/tmp}/raytex-gallery-XXXXXX.cfg")
   trap 'rm -f "$scene"' EXIT
-  if [ "$material" = aChecker ]; then
-    sed 's|^    aSolidChecker;|    aChecker;|' scenes/textures.cfg >"$scene"
-  else
-    sed -e 's|^    aSolidChecker;|    // aSolidChecker;|' -e "s|^    // $material;|    $material;|" \
-      scenes/textures.cfg >"$scene"
-  fi
+  scripts/course-scene.sh "$material" >"$scene"
   "$raytex" render "$scene" -o "docs/images/$material.png" --width 320 --height 240
   rm -f "$scene"
 done

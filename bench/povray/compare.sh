@@ -82,20 +82,9 @@ trap 'rm -rf "$tmp"' EXIT
 now_ns() { date +%s%N; }
 median() { "$python" -c "import statistics,sys; print(statistics.median(float(a) for a in sys.argv[1:]))" "$@"; }
 
-# The course scene with MATERIAL on the sphere, as docs/render_gallery.sh switches it, written
-# to $tmp with its #include made absolute (raytex resolves it against the scene's directory).
+# The course scene with MATERIAL on the sphere (scripts/course-scene.sh).
 make_scene() {
-  local material=$1 out=$2
-  if [ "$material" = aChecker ]; then
-    sed -e "s|^#include \"texture_include.cfg\"|#include \"$root/scenes/texture_include.cfg\"|" \
-        -e 's|^    aSolidChecker;|    aChecker;|' "$root/scenes/textures.cfg" >"$out"
-  else
-    sed -e "s|^#include \"texture_include.cfg\"|#include \"$root/scenes/texture_include.cfg\"|" \
-        -e 's|^    aSolidChecker;|    // aSolidChecker;|' -e "s|^    // $material;|    $material;|" \
-        "$root/scenes/textures.cfg" >"$out"
-  fi
-  grep -q "^    $material;" "$out" || die "could not switch scenes/textures.cfg to $material"
-  grep -q "^#include \"$root/" "$out" || die "could not rewrite the #include of scenes/textures.cfg"
+  "$root/scripts/course-scene.sh" "$1" >"$2" || die "could not make the $1 scene"
 }
 
 # One POV-Ray render; prints "trace_ms wall_ms".
