@@ -33,8 +33,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -163,21 +161,7 @@ double dispatchYardstick(Yardstick& y, const Device& device, VkPipeline pipeline
 // Copies the yardstick's image into its readback buffer (as readbackFrame does); waits.
 const float* readbackYardstick(Yardstick& y, const Device& device) {
   VkCommandBuffer cmd = beginCommands(device);
-  imageBarrier(cmd, y.output.image, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-               VK_ACCESS_SHADER_WRITE_BIT, VK_ACCESS_TRANSFER_READ_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
-               VK_PIPELINE_STAGE_TRANSFER_BIT);
-  VkBufferImageCopy region{};
-  region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-  region.imageExtent = {y.width, y.height, 1};
-  vkCmdCopyImageToBuffer(cmd, y.output.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, y.readback.buffer, 1, &region);
-  VkMemoryBarrier hostBarrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
-  hostBarrier.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
-  hostBarrier.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
-  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &hostBarrier, 0,
-                       nullptr, 0, nullptr);
-  imageBarrier(cmd, y.output.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_GENERAL,
-               VK_ACCESS_TRANSFER_READ_BIT, VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
-               VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
+  recordImageReadback(cmd, y.output.image, y.readback.buffer, y.width, y.height);
   submitAndWait(device, cmd);
   return static_cast<const float*>(y.readback.data);
 }
@@ -185,11 +169,9 @@ const float* readbackYardstick(Yardstick& y, const Device& device) {
 // --- raytex's scenes: the course scene's text, edited as the notes say
 
 std::string readFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error("cannot read " + path);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
+  std::string text;
+  if (!readTextFile(path, &text)) throw std::runtime_error("cannot read " + path);
+  return text;
 }
 
 // `text` with its first `from` replaced by `to`; throws if there is none (the scene changed).

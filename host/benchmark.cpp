@@ -63,7 +63,7 @@ int runBench(const RenderOptions& options, const BenchOptions& bench) {
   for (uint32_t run = 0; run < bench.runs; ++run) {
     last = HeadlessRender{};
     // One frame after the first: the first dispatch includes lavapipe's compile.
-    if (int rc = renderHeadless(options, 1, !options.output.empty(), &last)) return rc;
+    if (int rc = renderHeadless(options, 1, &last)) return rc;
     runs.push_back(last.times);
     frames.insert(frames.end(), last.frameMs.begin(), last.frameMs.end());
   }

@@ -1,7 +1,6 @@
 #include "headless.h"
 
 #include "gpu_scene.h"
-#include "image_io.h"
 #include "parser.h"
 #include "renderer.h"
 
@@ -14,7 +13,24 @@ double lapMs(std::chrono::steady_clock::time_point& start) {
   return ms;
 }
 
-int renderHeadless(const RenderOptions& options, uint32_t extraFrames, bool writeFile, HeadlessRender* out) {
+int savePng(const std::string& output, const ImageRGBA8& image, size_t nonFinite) {
+  if (nonFinite > 0) fprintf(stderr, "warning: %zu non-finite colour values (written as black)\n", nonFinite);
+  std::vector<uint8_t> png = encodePng(image);
+  if (png.empty()) {
+    fprintf(stderr, "raytex: cannot encode PNG for '%s'\n", output.c_str());
+    return 1;
+  }
+  if (output.empty()) return 0;
+  try {
+    writeFileAtomic(output, png);
+  } catch (const std::exception& e) {
+    fprintf(stderr, "raytex: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}
+
+int renderHeadless(const RenderOptions& options, uint32_t extraFrames, HeadlessRender* out) {
   PhaseTimes& times = out->times;
   std::chrono::steady_clock::time_point t = std::chrono::steady_clock::now();
   // Parse and load images before touching Vulkan: bad input fails fast.
@@ -67,21 +83,7 @@ int renderHeadless(const RenderOptions& options, uint32_t extraFrames, bool writ
     return 1;
   }
   t = std::chrono::steady_clock::now();  // device teardown is not a phase
-  if (out->nonFinite > 0)
-    fprintf(stderr, "warning: %zu non-finite colour values (written as black)\n", out->nonFinite);
-  std::vector<uint8_t> png = encodePng(image);
-  if (png.empty()) {
-    fprintf(stderr, "raytex: cannot encode PNG for '%s'\n", options.output.c_str());
-    return 1;
-  }
-  if (writeFile) {
-    try {
-      writeFileAtomic(options.output, png);
-    } catch (const std::exception& e) {
-      fprintf(stderr, "raytex: %s\n", e.what());
-      return 1;
-    }
-  }
+  if (int rc = savePng(options.output, image, out->nonFinite)) return rc;
   times.encode = lapMs(t);
   return 0;
 }

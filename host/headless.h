@@ -2,6 +2,7 @@
 #pragma once
 
 #include "cli.h"
+#include "image_io.h"
 
 #include <chrono>
 #include <cstdint>
@@ -31,7 +32,12 @@ struct HeadlessRender {
   size_t nonFinite = 0;  // colour values written as black
 };
 
+// Encodes `image` as PNG and writes it to `output` atomically, or only encodes it when `output`
+// is empty (bench); warns of non-finite values written as black. Returns 0, or 1 with a
+// one-line message on stderr.
+int savePng(const std::string& output, const ImageRGBA8& image, size_t nonFinite);
+
 // Renders options.scene on Vulkan, then `extraFrames` more frames of the same image (timed),
-// and writes the PNG to options.output unless `writeFile` is false. Returns the exit code
-// (0; 1 runtime failure; 2 bad input), with a one-line message on stderr when not 0.
-int renderHeadless(const RenderOptions& options, uint32_t extraFrames, bool writeFile, HeadlessRender* out);
+// and saves the PNG (savePng: options.output, if any). Returns the exit code (0; 1 runtime
+// failure; 2 bad input), with a one-line message on stderr when not 0.
+int renderHeadless(const RenderOptions& options, uint32_t extraFrames, HeadlessRender* out);

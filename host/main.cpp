@@ -16,18 +16,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-int writeImage(const RenderOptions& options, const ImageRGBA8& image, size_t nonFinite) {
-  if (nonFinite > 0)
-    fprintf(stderr, "warning: %zu non-finite colour values (written as black)\n", nonFinite);
-  try {
-    writePngAtomic(options.output, image);
-  } catch (const std::exception& e) {
-    fprintf(stderr, "raytex: %s\n", e.what());
-    return 1;
-  }
-  return 0;
-}
-
 // The float64 CPU reference: no Vulkan at all.
 int runReference(const RenderOptions& options, const RenderJob& job, const Scene& scene, Clock::time_point t,
                  double parseMs) {
@@ -42,7 +30,7 @@ int runReference(const RenderOptions& options, const RenderJob& job, const Scene
   std::vector<float> rgba = referenceToRgba(reference);
   size_t nonFinite = 0;
   ImageRGBA8 image = encodeSrgb(rgba.data(), int(job.width), int(job.height), &nonFinite);
-  if (int rc = writeImage(options, image, nonFinite)) return rc;
+  if (int rc = savePng(options.output, image, nonFinite)) return rc;
   double encodeMs = lapMs(t);
   if (options.stats)
     printf("parse %.1f ms | reference %.1f ms | encode %.1f ms | %ux%u, %u spp\n", parseMs, renderMs,
@@ -53,7 +41,7 @@ int runReference(const RenderOptions& options, const RenderJob& job, const Scene
 int runRender(const RenderOptions& options) {
   if (!options.reference) {
     HeadlessRender render;
-    int rc = renderHeadless(options, 0, true, &render);
+    int rc = renderHeadless(options, 0, &render);
     const PhaseTimes& t = render.times;
     if (rc == 0 && options.stats)
       printf("device %.1f ms | parse %.1f ms | upload %.1f ms | pipeline %.1f ms | render %.1f ms | "

@@ -33,17 +33,6 @@ std::string locString(const FileLoc& loc) {
   return loc.file + ":" + std::to_string(loc.line) + ":" + std::to_string(loc.column);
 }
 
-bool readFile(const std::string& path, std::string* out) {
-  std::error_code ec;
-  if (!fs::is_regular_file(path, ec)) return false;
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return false;
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  *out = ss.str();
-  return !in.bad();
-}
-
 // Identity of a file for cycle detection.
 std::string canonicalKey(const std::string& path) {
   std::error_code ec;
@@ -477,7 +466,7 @@ class Parser {
       fail(directive.loc, "cyclic #include of '" + path + "' (" + chain + path + ")");
     }
     std::string text;
-    if (!readFile(path, &text)) fail(directive.loc, "cannot open included file '" + path + "'");
+    if (!readTextFile(path, &text)) fail(directive.loc, "cannot open included file '" + path + "'");
     st_.scene.files.push_back(path);
     parseText(st_, text, path);
   }
@@ -504,9 +493,20 @@ Scene parseSceneText(const std::string& text, const std::string& fileName) {
   return std::move(st.scene);
 }
 
+bool readTextFile(const std::string& path, std::string* out) {
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec)) return false;
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return false;
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  *out = ss.str();
+  return !in.bad();
+}
+
 Scene parseSceneFile(const std::string& path) {
   std::string text;
-  if (!readFile(path, &text)) throw SceneError(FileLoc{path, 0, 0}, "cannot open scene file '" + path + "'");
+  if (!readTextFile(path, &text)) throw SceneError(FileLoc{path, 0, 0}, "cannot open scene file '" + path + "'");
   Scene scene = parseSceneText(text, path);
   scene.files.insert(scene.files.begin(), path);
   return scene;

@@ -6,6 +6,9 @@
 
 #include <string>
 
+// The whole of a regular file as text; false if it cannot be read.
+bool readTextFile(const std::string& path, std::string* out);
+
 // Reads and parses a scene file; #include paths resolve relative to the including file.
 Scene parseSceneFile(const std::string& path);
 

@@ -283,24 +283,9 @@ void readbackFrame(Renderer& r) {
     }
     return;
   }
-  VkCommandBuffer cmd = beginCommands(r.device);
   // The kernel's writes (an earlier, completed submission) become visible to the copy.
-  imageBarrier(cmd, r.output.image, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-               VK_ACCESS_SHADER_WRITE_BIT, VK_ACCESS_TRANSFER_READ_BIT,
-               VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT);
-  VkBufferImageCopy region{};
-  region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-  region.imageExtent = {r.width, r.height, 1};
-  vkCmdCopyImageToBuffer(cmd, r.output.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, r.readback.buffer, 1, &region);
-  VkMemoryBarrier hostBarrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
-  hostBarrier.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
-  hostBarrier.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
-  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1,
-                       &hostBarrier, 0, nullptr, 0, nullptr);
-  // Back to the kernel's layout; the next frame's writes wait for this read.
-  imageBarrier(cmd, r.output.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_GENERAL,
-               VK_ACCESS_TRANSFER_READ_BIT, VK_ACCESS_SHADER_WRITE_BIT,
-               VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
+  VkCommandBuffer cmd = beginCommands(r.device);
+  recordImageReadback(cmd, r.output.image, r.readback.buffer, r.width, r.height);
   submitAndWait(r.device, cmd);
 }
 
