@@ -181,7 +181,7 @@ std::string replaceFirst(std::string text, const std::string& from, const std::s
   return text.replace(at, from.size(), to);
 }
 
-// The sphere's material named instead of aSolidChecker (the sed of docs/render_gallery.sh).
+// The sphere's material named instead of aSolidChecker (as scripts/course-scene.sh does).
 std::string sphereMaterial(const std::string& text, const std::string& material, const std::string& file) {
   std::string t = replaceFirst(text, "\n    aSolidChecker;", "\n    // aSolidChecker;", file);
   return replaceFirst(t, "\n    // " + material + ";", "\n    " + material + ";", file);

@@ -5,7 +5,7 @@
 #        (defaults: build 1920 1080 1 3)
 #
 # For each material (aSolidChecker ... aChecker) it renders scenes/textures.cfg with that
-# material on the sphere (the render_gallery.sh switch) with raytex, and the matching
+# material on the sphere (scripts/course-scene.sh) with raytex, and the matching
 # bench/povray/<material>.pov with POV-Ray, at the same size and samples per pixel, RUNS times
 # each, and prints the medians:
 #   - POV-Ray's own Trace Time (from its render statistics) against raytex's per-frame time
