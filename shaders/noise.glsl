@@ -49,19 +49,28 @@ vec3 noiseGradient(uint h) {
               (h >= 4u && !vIsX) ? sv : 0.0);
 }
 
+// dot(noiseGradient(h), f) from selects of f's components, without forming the vector:
+// fewer operations than the dot, and the same value (the gradients' components are 0 and +-1).
+float noiseGradientDot(uint h, vec3 f) {
+  h &= 15u;
+  float u = h < 8u ? f.x : f.y;
+  float v = h < 4u ? f.y : (h == 12u || h == 14u ? f.x : f.z);
+  return ((h & 1u) == 0u ? u : -u) + ((h & 2u) == 0u ? v : -v);
+}
+
 // Improved Perlin noise; 0 at integer lattice points, |value| < ~1.04.
 float perlinNoise(vec3 p) {
   vec3 f;
   uvec4 hLo, hHi;
   noiseCell(p, f, hLo, hHi);
-  vec4 nLo = vec4(dot(noiseGradient(hLo.x), f),
-                  dot(noiseGradient(hLo.y), f - vec3(1, 0, 0)),
-                  dot(noiseGradient(hLo.z), f - vec3(0, 1, 0)),
-                  dot(noiseGradient(hLo.w), f - vec3(1, 1, 0)));
-  vec4 nHi = vec4(dot(noiseGradient(hHi.x), f - vec3(0, 0, 1)),
-                  dot(noiseGradient(hHi.y), f - vec3(1, 0, 1)),
-                  dot(noiseGradient(hHi.z), f - vec3(0, 1, 1)),
-                  dot(noiseGradient(hHi.w), f - vec3(1, 1, 1)));
+  vec4 nLo = vec4(noiseGradientDot(hLo.x, f),
+                  noiseGradientDot(hLo.y, f - vec3(1, 0, 0)),
+                  noiseGradientDot(hLo.z, f - vec3(0, 1, 0)),
+                  noiseGradientDot(hLo.w, f - vec3(1, 1, 0)));
+  vec4 nHi = vec4(noiseGradientDot(hHi.x, f - vec3(0, 0, 1)),
+                  noiseGradientDot(hHi.y, f - vec3(1, 0, 1)),
+                  noiseGradientDot(hHi.z, f - vec3(0, 1, 1)),
+                  noiseGradientDot(hHi.w, f - vec3(1, 1, 1)));
   vec3 u = noiseFade(f);
   vec4 nz = mix(nLo, nHi, u.z);          // (x0y0, x1y0, x0y1, x1y1)
   vec2 ny = mix(nz.xy, nz.zw, u.y);      // (x0, x1)
