@@ -160,6 +160,16 @@ GpuScene buildGpuScene(const Scene& scene, uint32_t width, uint32_t height, bool
   std::map<int, uint32_t> materialIndex;
   std::map<std::string, uint32_t> imageLayer;
   std::vector<ImageRGBA8> images;
+  // The kernel's uniform blocks hold MAX_SPHERES, MAX_PLANES and MAX_LIGHTS: point at the first
+  // one over.
+  auto checkCount = [](const auto& items, size_t max, const char* what) {
+    if (items.size() > max)
+      throw SceneError(items[max].loc, "the scene has " + std::to_string(items.size()) + " " + what +
+                                           "; raytex renders at most " + std::to_string(max));
+  };
+  checkCount(scene.spheres, MAX_SPHERES, "spheres");
+  checkCount(scene.planes, MAX_PLANES, "planes");
+  checkCount(scene.lights, MAX_LIGHTS, "lights");
   std::vector<int> packed = usedMaterials(scene);
   if (packed.size() > MAX_MATERIALS) {  // the kernel's uniform block holds MAX_MATERIALS
     int over = packed[MAX_MATERIALS];

@@ -100,7 +100,7 @@ class Parser {
       else if (kw.text == "plane") parsePlane(kw);
       else if (kw.text == "material") parseMaterial();
       else if (kw.text == "camera") parseCamera(kw);
-      else if (kw.text == "light") parseLight();
+      else if (kw.text == "light") parseLight(kw);
       else if (kw.text == "render") parseRender(kw);
       else if (kw.text == "background") topColor(kw, &st_.scene.background, &st_.backgroundLoc);
       else if (kw.text == "ambient_light") topColor(kw, &st_.scene.ambientLight, &st_.ambientLoc);
@@ -425,8 +425,9 @@ class Parser {
     });
   }
 
-  void parseLight() {
+  void parseLight(const Token& kw) {
     Light l;
+    l.loc = kw.loc;
     Seen seen;
     block("light", [&](const Token& key) {
       assignKnown(key, seen, "light", {"position", "color"});

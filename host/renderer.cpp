@@ -3,7 +3,9 @@
 #include "common.h"
 #include "pipeline.h"
 
+#include <algorithm>
 #include <chrono>
+#include <string>
 #include <vector>
 
 namespace {
@@ -35,19 +37,22 @@ void writeDescriptors(Renderer& r) {
   write(BINDING_DISPLAY, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE)->pImageInfo = &displayInfo;
   write(BINDING_IMAGES, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER)->pImageInfo = &imagesInfo;
   for (size_t i = 0; i < std::size(buffers); ++i) {
-    bool uniform = bufferBindings[i] == BINDING_FRAME || bufferBindings[i] == BINDING_NOISE || bufferBindings[i] == BINDING_MATERIALS;
+    bool uniform = bufferBindings[i] != BINDING_ACCUMULATION;
     write(bufferBindings[i], uniform ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER
                                      : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER)->pBufferInfo = &buffers[i];
   }
   vkUpdateDescriptorSets(r.device.device, uint32_t(writes.size()), writes.data(), 0, nullptr);
 }
 
-// Replaces `buffer` with one holding `data` (empty arrays get a placeholder element).
+// Replaces `buffer` with a uniform buffer of the whole block the kernel declares, `capacity`
+// items, the first `count` from `data`.
 template <typename T>
-void replaceBuffer(Renderer& r, Buffer& buffer, const T* data, size_t count, VkBufferUsageFlags usage) {
+void replaceUniformBuffer(Renderer& r, Buffer& buffer, const T* data, size_t count, size_t capacity = 1) {
+  std::vector<T> block(data, data + count);
+  block.resize(capacity);
   destroyBuffer(r.device, buffer);
-  buffer = createBuffer(r.device, sizeof(T) * count, usage);
-  writeBuffer(buffer, data, sizeof(T) * count);
+  buffer = createBuffer(r.device, sizeof(T) * capacity, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+  writeBuffer(buffer, block.data(), sizeof(T) * capacity);
 }
 
 // Progressive sums, one vec4 per pixel; a placeholder when not accumulating (the binding exists).
@@ -80,6 +85,16 @@ void createOutput(Renderer& r, uint32_t width, uint32_t height) {
 
 void createRenderer(Renderer& r, const DeviceOptions& options) {
   createDevice(r.device, options);
+  // The largest uniform block the kernel declares (common.h): 64 KiB is common, 16 KiB the minimum.
+  const size_t largestBlock = std::max({sizeof(gpu::Sphere) * MAX_SPHERES, sizeof(gpu::Plane) * MAX_PLANES,
+                                        sizeof(gpu::Material) * MAX_MATERIALS, sizeof(gpu::Light) * MAX_LIGHTS});
+  const uint32_t maxRange = r.device.properties.limits.maxUniformBufferRange;
+  if (maxRange < largestBlock) {
+    std::string name = r.device.properties.deviceName;
+    destroyDevice(r.device);
+    throw VulkanError(name + ": uniform buffers of at most " + std::to_string(maxRange) + " bytes; raytex needs " +
+                      std::to_string(largestBlock));
+  }
   r.setLayout = createTraceSetLayout(r.device);
 
   VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
@@ -88,8 +103,8 @@ void createRenderer(Renderer& r, const DeviceOptions& options) {
   VK_CHECK(vkCreatePipelineLayout(r.device.device, &layoutInfo, nullptr, &r.pipelineLayout));
 
   const VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 2},
-                                        {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 3},
-                                        {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 5},
+                                        {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 6},
+                                        {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1},
                                         {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1}};
   VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
   poolInfo.maxSets = 1;
@@ -152,18 +167,13 @@ void destroyRenderer(Renderer& r) {
 
 void uploadScene(Renderer& r, const GpuScene& s) {
   VK_CHECK(vkDeviceWaitIdle(r.device.device));
-  const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
-  const VkBufferUsageFlags uniform = VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT;
-  replaceBuffer(r, r.frame, &s.frame, 1, uniform);
-  replaceBuffer(r, r.spheres, s.spheres.data(), s.spheres.size(), storage);
-  replaceBuffer(r, r.planes, s.planes.data(), s.planes.size(), storage);
-  // The whole uniform block (the kernel declares MAX_MATERIALS; buildGpuScene keeps to it).
-  std::vector<gpu::Material> materials(s.materials);
-  materials.resize(MAX_MATERIALS);
-  replaceBuffer(r, r.materials, materials.data(), materials.size(), uniform);
-  replaceBuffer(r, r.lights, s.lights.data(), s.lights.size(), storage);
-  // Full size even when unused (2 KiB): the kernel declares the whole block.
-  replaceBuffer(r, r.noise, &s.noise, 1, uniform);
+  // Whole blocks (buildGpuScene keeps to the MAX_* counts); the noise table even when unused.
+  replaceUniformBuffer(r, r.frame, &s.frame, 1);
+  replaceUniformBuffer(r, r.spheres, s.spheres.data(), s.spheres.size(), MAX_SPHERES);
+  replaceUniformBuffer(r, r.planes, s.planes.data(), s.planes.size(), MAX_PLANES);
+  replaceUniformBuffer(r, r.materials, s.materials.data(), s.materials.size(), MAX_MATERIALS);
+  replaceUniformBuffer(r, r.lights, s.lights.data(), s.lights.size(), MAX_LIGHTS);
+  replaceUniformBuffer(r, r.noise, &s.noise, 1);
 
   destroyImage(r.device, r.images);
   static const uint8_t placeholder[4] = {255, 0, 255, 255};

@@ -81,6 +81,7 @@ struct Plane {
 struct Light {
   glm::dvec3 position{0.0, 10.0, 0.0};
   glm::vec3 color{1.0f};
+  FileLoc loc;
 };
 
 // Pinhole camera; fov is the vertical field of view in degrees.

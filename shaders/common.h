@@ -22,10 +22,14 @@ using uvec4 = glm::uvec4;
 // Descriptor bindings (set 0).
 #define BINDING_OUTPUT 0     // rgba32f storage image, linear radiance
 #define BINDING_FRAME 1      // uniform Frame
-#define BINDING_SPHERES 2    // storage Sphere[]
-#define BINDING_PLANES 3     // storage Plane[]
-#define BINDING_MATERIALS 4  // uniform Material[MAX_MATERIALS] (a UBO: frames ~10% faster on lavapipe)
-#define BINDING_LIGHTS 5     // storage Light[]
+// The scene's objects, lights and materials are uniform buffers, not storage buffers: lavapipe
+// turns each storage-buffer load inside control flow (a branch on what a ray hit, a loop) into
+// a loop over the SIMD lanes with a bounds check per load. As uniform buffers the course
+// scene's kernel went from 613 to 395 x86 instructions per pixel (bench/instructions.sh).
+#define BINDING_SPHERES 2    // uniform Sphere[MAX_SPHERES]
+#define BINDING_PLANES 3     // uniform Plane[MAX_PLANES]
+#define BINDING_MATERIALS 4  // uniform Material[MAX_MATERIALS]
+#define BINDING_LIGHTS 5     // uniform Light[MAX_LIGHTS]
 #define BINDING_NOISE 6      // uniform NoiseTable (a UBO: an SSBO is 1.6x slower on lavapipe)
 #define BINDING_IMAGES 7     // sampler2DArray, one layer per image texture
 #define BINDING_ACCUMULATION 8  // storage vec4[width * height]: running sums of progressive
@@ -34,8 +38,12 @@ using uvec4 = glm::uvec4;
                            // swapchain's byte order (Frame.displayBgra), copied to the window
                            // without a blit (1 x 1 when not accumulating)
 
-// Materials one render can use (the uniform block's size: 256 * 112 bytes = 28 KiB).
-#define MAX_MATERIALS 256
+// What one render can hold: the uniform blocks' sizes, each within the 64 KiB of
+// maxUniformBufferRange on lavapipe and NVIDIA (buildGpuScene reports a scene over them).
+#define MAX_MATERIALS 256  // 256 * 112 bytes = 28 KiB
+#define MAX_SPHERES 1024   // 1024 * 32 bytes = 32 KiB
+#define MAX_PLANES 256     // 256 * 96 bytes = 24 KiB
+#define MAX_LIGHTS 256     // 256 * 32 bytes = 8 KiB
 
 // Texture kinds (Material.textureKind). Bit (1 << kind) of SPEC_SPHERE_TEXTURE_KINDS and
 // SPEC_PLANE_TEXTURE_KINDS says the kind is on a sphere or a plane; absent kinds compile to

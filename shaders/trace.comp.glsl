@@ -26,10 +26,10 @@ layout(constant_id = SPEC_PROGRESSIVE) const bool PROGRESSIVE = false;
 
 layout(binding = BINDING_OUTPUT, rgba32f) uniform writeonly image2D outputImage;
 layout(std140, binding = BINDING_FRAME) uniform FrameBlock { Frame frame; };
-layout(std430, binding = BINDING_SPHERES) readonly buffer SphereBlock { Sphere spheres[]; };
-layout(std430, binding = BINDING_PLANES) readonly buffer PlaneBlock { Plane planes[]; };
+layout(std140, binding = BINDING_SPHERES) uniform SphereBlock { Sphere spheres[MAX_SPHERES]; };
+layout(std140, binding = BINDING_PLANES) uniform PlaneBlock { Plane planes[MAX_PLANES]; };
 layout(std140, binding = BINDING_MATERIALS) uniform MaterialBlock { Material materials[MAX_MATERIALS]; };
-layout(std430, binding = BINDING_LIGHTS) readonly buffer LightBlock { Light lights[]; };
+layout(std140, binding = BINDING_LIGHTS) uniform LightBlock { Light lights[MAX_LIGHTS]; };
 layout(std140, binding = BINDING_NOISE) uniform NoiseBlock { NoiseTable noiseTable; };
 layout(binding = BINDING_IMAGES) uniform sampler2DArray images;
 layout(std430, binding = BINDING_ACCUMULATION) buffer AccumulationBlock { vec4 accumulation[]; };

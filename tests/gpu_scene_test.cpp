@@ -175,6 +175,33 @@ TEST(GpuScene, MoreMaterialsThanTheKernelHoldsIsASceneError) {
   EXPECT_EQ(buildGpuScene(scene, 8, 8).materials.size(), size_t(MAX_MATERIALS));
 }
 
+namespace {
+
+// max + 1 copies of `block`, one per line: the error names the one over `max`, on line max + 1.
+void expectCountLimit(const std::string& block, int max, const std::string& what) {
+  std::string text;
+  for (int i = 0; i <= max; ++i) text += block + "\n";
+  Scene scene = parseSceneText(text, "many.cfg");
+  try {
+    buildGpuScene(scene, 8, 8);
+    ADD_FAILURE() << "no error for " << max + 1 << " " << what;
+  } catch (const SceneError& e) {
+    EXPECT_EQ(std::string(e.what()), "many.cfg:" + std::to_string(max + 1) + ":1: the scene has " +
+                                         std::to_string(max + 1) + " " + what + "; raytex renders at most " +
+                                         std::to_string(max));
+  }
+  text.erase(text.size() - block.size() - 1);  // exactly `max`: fine
+  EXPECT_NO_THROW(buildGpuScene(parseSceneText(text, "many.cfg"), 8, 8));
+}
+
+}  // namespace
+
+TEST(GpuScene, MoreObjectsOrLightsThanTheKernelHoldsIsASceneError) {
+  expectCountLimit("sphere { center = (0, 0, 0); radius = 1; }", MAX_SPHERES, "spheres");
+  expectCountLimit("plane { normal = (0, 1, 0); distance = 0; }", MAX_PLANES, "planes");
+  expectCountLimit("light { position = (0, 5, 0); }", MAX_LIGHTS, "lights");
+}
+
 TEST(GpuScene, AllMaterialsPacksUnusedOnesButSpecialisesToTheUsed) {
   Scene scene = parseSceneFile(std::string(RAYTEX_SOURCE_DIR) + "/scenes/textures.cfg");
   GpuScene used = buildGpuScene(scene, 8, 8, false);

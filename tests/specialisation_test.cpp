@@ -76,6 +76,44 @@ TEST_F(SpecialisationTest, CountsAtAndOverTheLimitMatch) {
   }
 }
 
+// Scenes that fill one of the kernel's uniform blocks (MAX_SPHERES, MAX_PLANES, MAX_LIGHTS):
+// the items before the last are out of view (behind the camera) or dark, so the centre pixel
+// is the last sphere, lit by the last light, over the last plane. (One block at a time: on
+// lavapipe a loop nest stops after 65535 iterations, and MAX_LIGHTS shadow rays each testing
+// MAX_SPHERES spheres are more.)
+TEST_F(SpecialisationTest, FullBlocksRenderTheirLastItems) {
+  auto repeat = [](int n, const std::string& line) {
+    std::string text;
+    for (int i = 0; i < n; ++i) text += line + "\n";
+    return text;
+  };
+  const std::string light = "light { position = (-6, 10, 6); color = (1, 1, 1); }\n";
+  const std::string sphere = "sphere { center = (0, 0, 0); radius = 2; aChecker; }\n";
+  const std::string plane = "plane { normal = (0, 1, 0); distance = -2; aChecker; }\n";
+  const std::string darkLight = "light { position = (0, 10, 6); color = (0, 0, 0); }";
+  const std::string hiddenSphere = "sphere { center = (0, 0, 40); radius = 1; aChecker; }";
+  const std::string hiddenPlane = "plane { normal = (0, 0, 1); distance = 40; aChecker; }";
+  const std::string scenes[] = {
+      header() + repeat(MAX_LIGHTS - 1, darkLight) + light + sphere + plane,
+      header() + light + repeat(MAX_SPHERES - 1, hiddenSphere) + sphere + plane,
+      header() + light + sphere + repeat(MAX_PLANES - 1, hiddenPlane) + plane,
+  };
+  const uint32_t w = 16, h = 12;
+  for (const std::string& text : scenes) {
+    Scene scene = parse(text);
+    SCOPED_TRACE(std::to_string(scene.lights.size()) + " lights, " + std::to_string(scene.spheres.size()) +
+                 " spheres, " + std::to_string(scene.planes.size()) + " planes");
+    std::vector<float> coords = render(scene, w, h, OUTPUT_COORDS);
+    EXPECT_EQ(coords[((h / 2) * w + w / 2) * 4 + 3], float(HIT_SPHERE));  // the last sphere
+    EXPECT_EQ(coords[((h - 1) * w + w / 2) * 4 + 3], float(HIT_PLANE));   // the last plane, below it
+    // Lit by the last light: well over the ambient term alone, aChecker's 0.15 of the albedo.
+    const size_t centre = ((h / 2) * w + w / 2) * 4;
+    std::vector<float> albedo = render(scene, w, h, OUTPUT_ALBEDO);
+    std::vector<float> shaded = render(scene, w, h, OUTPUT_SHADED);
+    for (int c = 0; c < 3; ++c) EXPECT_GT(shaded[centre + c], 1.5f * 0.15f * albedo[centre + c]) << "channel " << c;
+  }
+}
+
 // The check can fail: a kernel built for one sphere fewer than the scene has misses it.
 TEST_F(SpecialisationTest, AWrongCountChangesTheImage) {
   Scene scene = rowScene(3);
