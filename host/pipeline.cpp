@@ -18,7 +18,7 @@ VkDescriptorSetLayout createTraceSetLayout(const Device& device) {
     return b;
   };
   const VkDescriptorSetLayoutBinding bindings[] = {
-      binding(BINDING_OUTPUT, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
+      binding(BINDING_OUTPUT, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER),
       binding(BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER),
       binding(BINDING_SPHERES, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER),
       binding(BINDING_PLANES, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER),

@@ -28,13 +28,14 @@ struct Renderer {
   std::vector<CachedPipeline> pipelines;  // every one created, kept for switching back
 
   Buffer frame, spheres, planes, materials, lights, noise;
-  Buffer readback;  // width * height * 4 floats
+  // The float image the host reads: width * height * 4 floats of linear radiance, written by
+  // the kernel (BINDING_OUTPUT) or, progressive, by readbackFrame.
+  Buffer pixels;
   Buffer accumulation;  // progressive sums, width * height * 4 floats when `accumulate`
   Image display;        // r32ui: progressive means as 8-bit sRGB pixels (1 x 1 unless `accumulate`)
   bool accumulate = false;  // set before uploadScene to render progressively (the viewer)
   uint32_t displayBgra = 0;  // 1: `display` in B, G, R, A byte order (Frame.displayBgra)
   float sampleWeight = 1.0f;  // of the last renderSample: readbackFrame's mean = sum * weight
-  Image output;     // rgba32f storage image
   Image images;     // sampler2DArray of image textures (1x1 placeholder when none)
   uint32_t width = 0, height = 0;
   VkQueryPool timestamps = VK_NULL_HANDLE;  // two per frame, around the dispatch

@@ -39,9 +39,11 @@ Buffer createBuffer(const Device& device, VkDeviceSize size, VkBufferUsageFlags 
   VK_CHECK(vkCreateBuffer(device.device, &info, nullptr, &b.buffer));
   VkMemoryRequirements req;
   vkGetBufferMemoryRequirements(device.device, b.buffer, &req);
-  // Readback buffers prefer cached memory: uncached reads are slow on discrete GPUs.
+  // Buffers the device writes and the host reads (copy targets, the kernel's storage buffers)
+  // prefer cached memory: uncached reads are slow on discrete GPUs.
   VkMemoryPropertyFlags preferred =
-      (usage & VK_BUFFER_USAGE_TRANSFER_DST_BIT) ? VK_MEMORY_PROPERTY_HOST_CACHED_BIT : 0;
+      (usage & (VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT)) ? VK_MEMORY_PROPERTY_HOST_CACHED_BIT
+                                                                                          : 0;
   b.memory = allocate(device, req,
                       VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT,
                       preferred);

@@ -20,7 +20,7 @@ using uvec4 = glm::uvec4;
 #define WORKGROUP_Y 8
 
 // Descriptor bindings (set 0).
-#define BINDING_OUTPUT 0     // rgba32f storage image, linear radiance
+#define BINDING_OUTPUT 0     // storage vec4[width * height], row-major: linear radiance, a = 1
 #define BINDING_FRAME 1      // uniform Frame
 // The scene's objects, lights and materials are uniform buffers, not storage buffers: lavapipe
 // turns each storage-buffer load inside control flow (a branch on what a ray hit, a loop) into

@@ -24,7 +24,7 @@ layout(constant_id = SPEC_OUTPUT_MODE) const uint OUTPUT_MODE = OUTPUT_SHADED;
 layout(constant_id = SPEC_SAMPLES_PER_SIDE) const uint SAMPLES_PER_SIDE = 1u;
 layout(constant_id = SPEC_PROGRESSIVE) const bool PROGRESSIVE = false;
 
-layout(binding = BINDING_OUTPUT, rgba32f) uniform writeonly image2D outputImage;
+layout(std430, binding = BINDING_OUTPUT) writeonly buffer OutputBlock { vec4 outputPixels[]; };
 layout(std140, binding = BINDING_FRAME) uniform FrameBlock { Frame frame; };
 layout(std140, binding = BINDING_SPHERES) uniform SphereBlock { Sphere spheres[MAX_SPHERES]; };
 layout(std140, binding = BINDING_PLANES) uniform PlaneBlock { Plane planes[MAX_PLANES]; };
@@ -168,5 +168,5 @@ void main() {
     result = vec4(sum * (1.0 / float(n * n)), 1.0);
   }
 #endif
-  imageStore(outputImage, ivec2(pixel), result);
+  outputPixels[pixel.y * frame.width + pixel.x] = result;
 }
