@@ -29,20 +29,20 @@ vec3 solidWidth(Footprint f) { return min(max(abs(f.dsdx), abs(f.dsdy)), vec3(FO
 // Texture coordinates of the surface point p + dp (dp in the tangent plane at the hit):
 // exact on planes; on spheres the point is projected back onto the sphere.
 TexCoord texCoordNear(Hit hit, vec3 p, vec3 dp) {
-  if (hit.kind == HIT_PLANE) return planeTexCoord(planes[hit.index], p + dp);
-  vec4 cr = spheres[hit.index].centerRadius;
+  if (hit.kind == HIT_PLANE) return planeTexCoord(planeAt(hit.index), p + dp);
+  vec4 cr = sphereAt(hit.index).centerRadius;
   return sphereTexCoord(normalize(p + dp - cr.xyz), SPHERE_LAT_LONG);
 }
 
 // Texture-space derivatives of a surface step dp at the hit.
 void textureDerivatives(Hit hit, Surface s, vec3 dp, out vec2 duv, out vec3 ds) {
   if (hit.kind == HIT_PLANE) {
-    Plane pl = planes[hit.index];
+    Plane pl = planeAt(hit.index);
     float invScale = 1.0 / pl.tangentScale.w;
     duv = vec2(dot(dp, pl.tangentScale.xyz), dot(dp, pl.binormal.xyz)) * invScale;
     ds = dp * invScale;
   } else {
-    vec4 cr = spheres[hit.index].centerRadius;
+    vec4 cr = sphereAt(hit.index).centerRadius;
     vec3 n = normalize(s.p - cr.xyz);  // outward, as the mapping uses
     vec3 dn = (dp - n * dot(n, dp)) / cr.w;
     // u = (atan2(n_z, n_x) + pi) / 2pi, v = (asin(n_y) + pi/2) / pi, differentiated; both

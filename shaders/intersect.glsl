@@ -6,7 +6,7 @@ const float T_MAX = 3.0e38;
 struct Hit {
   float t;
   uint kind;   // HIT_*
-  uint index;  // into spheres[] or planes[]
+  uint index;  // of the sphere or plane (sphereAt, planeAt)
 };
 
 // Smallest root t in (tMin, tMax) of |o + t d - c| = r for unit d, or -1.
@@ -38,11 +38,11 @@ float intersectPlane(vec3 o, vec3 dir, vec4 normalDistance, float tMin, float tM
 Hit closestHit(vec3 o, vec3 d) {
   Hit hit = Hit(T_MAX, HIT_NONE, 0u);
   for (uint i = 0u; i < sphereCount(); ++i) {
-    float t = intersectSphere(o, d, spheres[i].centerRadius, 0.0, hit.t);
+    float t = intersectSphere(o, d, sphereAt(i).centerRadius, 0.0, hit.t);
     if (t > 0.0) hit = Hit(t, HIT_SPHERE, i);
   }
   for (uint i = 0u; i < planeCount(); ++i) {
-    float t = intersectPlane(o, d, planes[i].normalDistance, 0.0, hit.t);
+    float t = intersectPlane(o, d, planeAt(i).normalDistance, 0.0, hit.t);
     if (t > 0.0) hit = Hit(t, HIT_PLANE, i);
   }
   return hit;
@@ -51,8 +51,8 @@ Hit closestHit(vec3 o, vec3 d) {
 // True if anything lies on the segment from o along unit d before distance tMax.
 bool occluded(vec3 o, vec3 d, float tMax) {
   for (uint i = 0u; i < sphereCount(); ++i)
-    if (intersectSphere(o, d, spheres[i].centerRadius, 0.0, tMax) > 0.0) return true;
+    if (intersectSphere(o, d, sphereAt(i).centerRadius, 0.0, tMax) > 0.0) return true;
   for (uint i = 0u; i < planeCount(); ++i)
-    if (intersectPlane(o, d, planes[i].normalDistance, 0.0, tMax) > 0.0) return true;
+    if (intersectPlane(o, d, planeAt(i).normalDistance, 0.0, tMax) > 0.0) return true;
   return false;
 }

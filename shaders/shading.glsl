@@ -10,7 +10,7 @@ struct Surface {
 Surface surfaceAt(Hit hit, vec3 o, vec3 d) {
   Surface s;
   if (hit.kind == HIT_SPHERE) {
-    Sphere sp = spheres[hit.index];
+    Sphere sp = sphereAt(hit.index);
     // Re-project onto the sphere: o + t d carries the error of t.
     // A ray through the centre of a sphere too small for float (radius 0, or r^2 below
     // the smallest float) hits at the centre itself, where normalize(0) is NaN: there
@@ -22,7 +22,7 @@ Surface surfaceAt(Hit hit, vec3 o, vec3 d) {
     s.n = outward;
     s.material = sp.material;
   } else {
-    Plane pl = planes[hit.index];
+    Plane pl = planeAt(hit.index);
     // Re-project onto the plane: removes the error of t along the normal.
     vec3 n = pl.normalDistance.xyz;
     s.p = o + hit.t * d;
@@ -63,7 +63,7 @@ vec3 shade(Surface s, Material m, vec3 albedo, vec3 toEye) {
   vec3 color = frame.ambientLight.rgb * m.ambient.rgb * (textured ? albedo : vec3(1.0));
   vec3 origin = offsetOrigin(s.p, s.n);
   for (uint i = 0u; i < lightCount(); ++i) {
-    vec3 toLight = lights[i].position.xyz - s.p;
+    vec3 toLight = lightAt(i).position.xyz - s.p;
     float dist = length(toLight);
     if (!(dist > 0.0)) continue;
     vec3 l = toLight / dist;
@@ -73,7 +73,7 @@ vec3 shade(Surface s, Material m, vec3 albedo, vec3 toEye) {
     vec3 r = reflect(-l, s.n);
     float rDotV = max(dot(r, toEye), 0.0);
     vec3 specular = rDotV > 0.0 ? m.specular.rgb * pow(rDotV, m.specular.w) : vec3(0.0);
-    color += lights[i].color.rgb * (albedo * nDotL + specular);
+    color += lightAt(i).color.rgb * (albedo * nDotL + specular);
   }
   return color;
 }
