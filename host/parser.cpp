@@ -509,6 +509,10 @@ Scene parseSceneFile(const std::string& path) {
   std::string text;
   if (!readTextFile(path, &text)) throw SceneError(FileLoc{path, 0, 0}, "cannot open scene file '" + path + "'");
   Scene scene = parseSceneText(text, path);
+  // A file with no object would render the background alone: an empty file, or a material
+  // library given by mistake, not an image anyone wants.
+  if (scene.spheres.empty() && scene.planes.empty())
+    throw SceneError(FileLoc{path, 1, 1}, "nothing to render: the scene has no sphere or plane");
   scene.files.insert(scene.files.begin(), path);
   return scene;
 }

@@ -9,7 +9,8 @@
 // The whole of a regular file as text; false if it cannot be read.
 bool readTextFile(const std::string& path, std::string* out);
 
-// Reads and parses a scene file; #include paths resolve relative to the including file.
+// Reads and parses a scene file; #include paths resolve relative to the including file. A
+// scene with no sphere or plane is an error (FILE:1:1): it would render the background alone.
 Scene parseSceneFile(const std::string& path);
 
 // Parses scene text as if it were the file `fileName` (used for error locations and

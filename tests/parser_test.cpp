@@ -564,6 +564,16 @@ TEST_F(ParserFiles, IncludeResolvesRelativeToTheIncludingFile) {
   EXPECT_EQ(s.planes[0].material, 0);
 }
 
+TEST_F(ParserFiles, AFileWithNoObjectIsAnError) {
+  const std::string message = ":1:1: nothing to render: the scene has no sphere or plane";
+  write("empty.cfg", "");
+  EXPECT_EQ(fileErrorOf(path("empty.cfg")), path("empty.cfg") + message);
+  write("library.cfg", "material m { diffuse = (1, 0, 0); }\nlight { position = (0, 5, 0); }\n");
+  EXPECT_EQ(fileErrorOf(path("library.cfg")), path("library.cfg") + message);
+  write("plane.cfg", "plane { normal = (0, 1, 0); distance = 0; }\n");
+  EXPECT_EQ(parseSceneFile(path("plane.cfg")).planes.size(), 1u);
+}
+
 TEST_F(ParserFiles, IncludeNotFound) {
   std::string main = write("main.cfg", "// materials\n  #include \"missing.cfg\"\n");
   EXPECT_EQ(fileErrorOf(main), main + ":2:3: cannot open included file '" + path("missing.cfg") + "'");
@@ -593,7 +603,7 @@ TEST_F(ParserFiles, IncludeDepthLimit) {
   auto chain = [&](const std::string& prefix, int n) {
     for (int i = 0; i < n; ++i)
       write(prefix + std::to_string(i) + ".cfg", "#include \"" + prefix + std::to_string(i + 1) + ".cfg\"\n");
-    write(prefix + std::to_string(n) + ".cfg", "material deep { }\n");
+    write(prefix + std::to_string(n) + ".cfg", "material deep { }\nsphere { deep; }\n");
     return path(prefix + "0.cfg");
   };
   Scene ok = parseSceneFile(chain("ok", 16));
