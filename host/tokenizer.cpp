@@ -78,7 +78,16 @@ Token Tokenizer::next() {
     number(t);
   } else if (c == '"') {
     advance();
-    while (pos_ < src_.size() && src_[pos_] != '"' && src_[pos_] != '\n') advance();
+    while (pos_ < src_.size() && src_[pos_] != '"' && src_[pos_] != '\n') {
+      // A file name holding a NUL would be cut short by the file system and print cut short.
+      unsigned char u = static_cast<unsigned char>(src_[pos_]);
+      if ((u < 0x20 && u != '\t') || u == 0x7f) {
+        FileLoc at = t.loc;
+        at.column += int(pos_ - start);  // a string is on one line
+        throw SceneError(at, "control character " + quoteChar(src_[pos_]) + " in a string");
+      }
+      advance();
+    }
     if (pos_ >= src_.size() || src_[pos_] != '"')
       throw SceneError(t.loc, "unterminated string (a string must end with '\"' on the line it starts)");
     t.kind = Tok::String;

@@ -10,5 +10,8 @@ $SUDO apt-get install -y -qq --no-install-recommends \
   build-essential cmake ninja-build pkg-config \
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers glslang-tools \
   libglm-dev libglfw3-dev libstb-dev zlib1g-dev libgtest-dev \
-  xvfb xdotool x11-apps >/dev/null  # the viewer's test: a virtual X display, keys, xwd captures
+  clang libclang-rt-dev \
+  xvfb xdotool x11-apps >/dev/null
+# clang, libclang-rt-dev: the parser's fuzz test (libFuzzer, ASan and UBSan runtimes);
+# xvfb, xdotool, x11-apps: the viewer's test (a virtual X display, keys, xwd captures).
 echo "raytex dependencies installed"

@@ -97,5 +97,19 @@ cp "$tmp/ok.png" "$tmp/keep.png"
 expect keep-on-error 2 'typo.cfg:3:3' -- "$raytex" render "$tmp/typo.cfg" -o "$tmp/keep.png"
 check keep-on-error-unchanged cmp -s "$tmp/ok.png" "$tmp/keep.png"
 
+# Determinism: the same scene rendered twice, in two processes, gives the same PNG bytes (a
+# noise material, an image texture and 4 spp: the paths most likely to vary).
+for i in 1 2; do
+  "$raytex" render "$src/scenes/textures.cfg" --width 96 --height 72 --spp 4 -o "$tmp/same-$i.png" >/dev/null 2>&1
+  sed -e 's|^    aSolidChecker;|    // aSolidChecker;|' -e 's|^    // aMarble;|    aMarble;|' \
+    -e 's|^    aChecker;|    anImage;|' "$src/scenes/textures.cfg" >"$src/scenes/.cli-test-determinism.cfg"
+  "$raytex" render "$src/scenes/.cli-test-determinism.cfg" --width 96 --height 72 --spp 4 -o "$tmp/marble-$i.png" \
+    >/dev/null 2>&1
+  rm -f "$src/scenes/.cli-test-determinism.cfg"
+done
+check deterministic-default cmp -s "$tmp/same-1.png" "$tmp/same-2.png"
+check deterministic-marble-image cmp -s "$tmp/marble-1.png" "$tmp/marble-2.png"
+check deterministic-differs bash -c "! cmp -s '$tmp/same-1.png' '$tmp/marble-1.png'"
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]
