@@ -170,6 +170,19 @@ GpuScene buildGpuScene(const Scene& scene, uint32_t width, uint32_t height, bool
   checkCount(scene.spheres, MAX_SPHERES, "spheres");
   checkCount(scene.planes, MAX_PLANES, "planes");
   checkCount(scene.lights, MAX_LIGHTS, "lights");
+  // Each light's shadow ray tests every object (kMaxLoopIterations): point at the first light
+  // over the limit.
+  const size_t objects = scene.spheres.size() + scene.planes.size();
+  const uint64_t iterations = loopIterationsPerSample(scene.lights.size(), objects);
+  if (iterations > kMaxLoopIterations) {
+    // With n lights, (n + 1) (objects + 1) passes the limit from n = limit / (objects + 1) on.
+    size_t first = std::min(std::max<size_t>(kMaxLoopIterations / (objects + 1), 1), scene.lights.size()) - 1;
+    throw SceneError(scene.lights[first].loc,
+                     "the scene has " + std::to_string(scene.lights.size()) + " lights and " +
+                         std::to_string(objects) + " objects: (lights + 1) x (objects + 1) = " +
+                         std::to_string(iterations) + " intersection tests per sample, raytex does at most " +
+                         std::to_string(kMaxLoopIterations));
+  }
   std::vector<int> packed = usedMaterials(scene);
   if (packed.size() > MAX_MATERIALS) {  // the kernel's uniform block holds MAX_MATERIALS
     int over = packed[MAX_MATERIALS];

@@ -56,17 +56,33 @@ int renderHeadless(const RenderOptions& options, uint32_t extraFrames, HeadlessR
     createRenderer(renderer, {options.device, options.validate});
     out->deviceName = renderer.device.properties.deviceName;
     times.device = lapMs(t);
+    // Samples that together would pass lavapipe's loop limit (kMaxLoopIterations) are added one
+    // dispatch at a time by the progressive kernel: the same image, bit for bit.
+    const bool perSample = job.samplesPerPixel > 1 &&
+                           job.samplesPerPixel * loopIterationsPerSample(gpuScene.lights.size(),
+                                                                        gpuScene.spheres.size() + gpuScene.planes.size()) >
+                               kMaxLoopIterations;
+    renderer.accumulate = perSample;
     uploadScene(renderer, gpuScene);
     times.upload = lapMs(t);
     preparePipeline(renderer, {gpuScene.shape, OUTPUT_SHADED, uint32_t(job.filterBox ? FILTER_BOX : FILTER_POINT),
-                               job.samplesPerSide});
+                               job.samplesPerSide, perSample});
     times.pipeline = lapMs(t);
-    renderFrame(renderer);
+    auto frame = [&] {  // one image; its GPU time
+      if (!perSample) {
+        renderFrame(renderer);
+        return renderer.lastFrameMs;
+      }
+      double ms = 0.0;
+      for (uint32_t i = 0; i < job.samplesPerPixel; ++i) {
+        renderSample(renderer, i);
+        ms += renderer.lastFrameMs;
+      }
+      return ms;
+    };
+    frame();
     times.firstDispatch = lapMs(t);
-    for (uint32_t i = 0; i < extraFrames; ++i) {
-      renderFrame(renderer);
-      out->frameMs.push_back(renderer.lastFrameMs);
-    }
+    for (uint32_t i = 0; i < extraFrames; ++i) out->frameMs.push_back(frame());
     t = std::chrono::steady_clock::now();  // the extra frames are not part of a render
     readbackFrame(renderer);
     image = encodeSrgb(framePixels(renderer), int(job.width), int(job.height), &out->nonFinite);
