@@ -68,7 +68,7 @@ void createOutput(Renderer& r, uint32_t width, uint32_t height) {
                           VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, false);
   // A storage buffer in host-visible memory, not an image: the host reads it in place, and
   // lavapipe stores one vec4 per lane instead of one image channel per lane (the default
-  // scene's kernel: 386 -> 353 x86 instructions per pixel, bench/instructions.sh).
+  // scene's kernel: 386 -> 374 x86 instructions per pixel, bench/instructions.sh).
   r.pixels = createBuffer(r.device, VkDeviceSize(width) * height * 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
   VkCommandBuffer cmd = beginCommands(r.device);
   imageBarrier(cmd, r.display.image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL, 0, VK_ACCESS_SHADER_WRITE_BIT,

@@ -33,7 +33,8 @@ struct Renderer {
   Buffer pixels;
   Buffer accumulation;  // progressive sums, width * height * 4 floats when `accumulate`
   Image display;        // r32ui: progressive means as 8-bit sRGB pixels (1 x 1 unless `accumulate`)
-  bool accumulate = false;  // set before uploadScene to render progressively (the viewer)
+  bool accumulate = false;  // set before uploadScene to render progressively (the viewer; headless
+                            // renders over lavapipe's loop limit, headless.cpp)
   uint32_t displayBgra = 0;  // 1: `display` in B, G, R, A byte order (Frame.displayBgra)
   float sampleWeight = 1.0f;  // of the last renderSample: readbackFrame's mean = sum * weight
   Image images;     // sampler2DArray of image textures (1x1 placeholder when none)
