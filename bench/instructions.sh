@@ -4,7 +4,8 @@
 # One thread and Mesa's shader cache off, so both runs compile alike. Deterministic: use it to
 # compare kernel variants on a shared machine, where frame times move by 30 % with the load.
 # Needs valgrind (apt-get install valgrind); about 15 s per scene at 320x240.
-# Usage: bench/instructions.sh [BUILD_DIR] SCENE... (env: WIDTH, HEIGHT, SIDE = samples per side)
+# Usage: bench/instructions.sh [BUILD_DIR] SCENE... (env: WIDTH, HEIGHT, SIDE = samples per side,
+# UNBAKED=1: the kernel that reads the scene from its uniform blocks, as the viewer's does)
 set -euo pipefail
 build=${1:-build}
 shift
@@ -14,12 +15,13 @@ command -v valgrind >/dev/null || { echo "instructions.sh: needs valgrind (apt-g
 export VK_ICD_FILENAMES=${VK_ICD_FILENAMES:-/usr/share/vulkan/icd.d/lvp_icd.x86_64.json}
 export LP_NUM_THREADS=1 MESA_SHADER_CACHE_DISABLE=true
 width=${WIDTH:-320} height=${HEIGHT:-240} side=${SIDE:-1}
+baked=$([ "${UNBAKED:-0}" = 1 ] && echo unbaked || echo baked)
 count() {  # SCENE FRAMES -> total instructions of the process
   valgrind --tool=callgrind --smc-check=all --callgrind-out-file=/dev/null \
-    "$frames" "$1" "$width" "$height" "$2" "$side" 2>&1 | sed -n 's/.*Collected : \([0-9]*\).*/\1/p'
+    "$frames" "$1" "$width" "$height" "$2" "$side" "$baked" 2>&1 | sed -n 's/.*Collected : \([0-9]*\).*/\1/p'
 }
 for scene in "$@"; do
   base=$(count "$scene" 0)
   more=$(count "$scene" 2)
-  echo "$scene ${width}x$height, $((side * side)) spp: $(((more - base) / 2 / (width * height))) instructions/pixel"
+  echo "$scene ${width}x$height, $((side * side)) spp, $baked: $(((more - base) / 2 / (width * height))) instructions/pixel"
 done

@@ -30,15 +30,20 @@ int main(int argc, char** argv) {
   try {
     Scene scene = parseSceneFile(args.scene);
     GpuScene gpuScene = buildGpuScene(scene, width, height);
-    // The kernel specialised to the scene; to its texture kinds only (object and light counts
-    // read at run time); and not at all (every kind compiled in).
+    // The kernel built around the scene's values (raytex render's); specialised to its kinds
+    // and counts; to its texture kinds only (object and light counts read at run time); and
+    // not at all (every kind compiled in).
     SceneShape kindsOnly;
     kindsOnly.sphereKinds = gpuScene.shape.sphereKinds;
     kindsOnly.planeKinds = gpuScene.shape.planeKinds;
     struct Variant {
       const char* name;
       SceneShape shape;
-    } variants[] = {{"scene", gpuScene.shape}, {"kinds only", kindsOnly}, {"none", SceneShape{}}};
+      BakedScene baked;
+    } variants[] = {{"values", gpuScene.shape, bakeScene(gpuScene)},
+                    {"scene", gpuScene.shape, {}},
+                    {"kinds only", kindsOnly, {}},
+                    {"none", SceneShape{}, {}}};
     printf("%s %ux%u, %d runs, medians in ms\n", args.scene.c_str(), width, height, runs);
     printf("%-12s %10s %14s %10s\n", "specialised", "create", "first frame", "frame");
     for (const Variant& v : variants) {
@@ -48,7 +53,7 @@ int main(int argc, char** argv) {
         createRenderer(r, {});
         uploadScene(r, gpuScene);
         Clock::time_point t = Clock::now();
-        preparePipeline(r, {v.shape, OUTPUT_SHADED, FILTER_POINT, 1});
+        preparePipeline(r, {v.shape, OUTPUT_SHADED, FILTER_POINT, 1, 0, v.baked});
         create.push_back(msSince(t));
         t = Clock::now();
         renderFrame(r);  // lavapipe finishes compiling at the first dispatch

@@ -196,7 +196,8 @@ struct RaytexCase {
 RaytexCase raytexCase(const std::string& name, const std::string& text, const std::string& path, uint32_t width,
                       uint32_t height, uint32_t samplesPerSide) {
   GpuScene scene = buildGpuScene(parseSceneText(text, path), width, height);
-  PipelineKey key{scene.shape, OUTPUT_SHADED, FILTER_POINT, samplesPerSide};
+  // As raytex render builds it: around the scene's values.
+  PipelineKey key{scene.shape, OUTPUT_SHADED, FILTER_POINT, samplesPerSide, 0, bakeScene(scene)};
   return {name, std::move(scene), key};
 }
 

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <map>
 
 static_assert(int(TextureKind::None) == TEX_NONE && int(TextureKind::Image) == TEX_IMAGE &&
@@ -249,4 +250,24 @@ GpuScene buildGpuScene(const Scene& scene, uint32_t width, uint32_t height, bool
                                 chain[size_t(level)].pixels.end());
   }
   return g;
+}
+
+BakedScene bakeScene(const GpuScene& g) {
+  BakedScene baked;
+  const SceneShape& shape = g.shape;
+  if (shape.sphereCount == COUNT_FROM_FRAME || shape.planeCount == COUNT_FROM_FRAME ||
+      shape.lightCount == COUNT_FROM_FRAME || g.spheres.size() > MAX_BAKED_SPHERES ||
+      g.planes.size() > MAX_BAKED_PLANES || g.lights.size() > MAX_BAKED_LIGHTS || g.materials.empty() ||
+      g.materials.size() > MAX_BAKED_MATERIALS)
+    return baked;
+  auto put = [&](uint32_t word, const auto& items) {
+    std::memcpy(baked.words.data() + word, items.data(), items.size() * sizeof(items[0]));
+  };
+  put(BAKED_SPHERE_WORD, g.spheres);
+  put(BAKED_PLANE_WORD, g.planes);
+  put(BAKED_LIGHT_WORD, g.lights);
+  put(BAKED_MATERIAL_WORD, g.materials);
+  baked.enabled = 1;
+  baked.materialCount = uint32_t(g.materials.size());
+  return baked;
 }

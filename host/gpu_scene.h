@@ -6,6 +6,7 @@
 #include "image_io.h"
 #include "scene.h"
 
+#include <array>
 #include <cstdint>
 #include <map>
 #include <vector>
@@ -22,6 +23,17 @@ struct SceneShape {
   bool operator==(const SceneShape& o) const {
     return sphereKinds == o.sphereKinds && planeKinds == o.planeKinds && sphereCount == o.sphereCount &&
            planeCount == o.planeCount && lightCount == o.lightCount;
+  }
+};
+
+// A scene's spheres, planes, lights and materials as the words of SPEC_BAKED_WORDS (laid out as
+// the uniform blocks' structs, common.h), for a kernel with their values built in.
+struct BakedScene {
+  uint32_t enabled = 0;        // SPEC_BAKED (a VkBool32)
+  uint32_t materialCount = 1;  // SPEC_BAKED_MATERIAL_COUNT
+  std::array<uint32_t, BAKED_WORD_COUNT> words{};
+  bool operator==(const BakedScene& o) const {
+    return enabled == o.enabled && materialCount == o.materialCount && words == o.words;
   }
 };
 
@@ -73,3 +85,8 @@ gpu::Frame cameraFrame(const Camera& camera, uint32_t width, uint32_t height);
 // The scene's kinds per shape (kinds(): all in use) and its counts (those over
 // MAX_SPECIALISED_COUNT: COUNT_FROM_FRAME).
 SceneShape sceneShape(const Scene& scene);
+
+// The scene's values for a kernel built around them; not enabled if it has more than
+// MAX_BAKED_* spheres, planes, lights or materials (or none of a kind of object: the kernel
+// then keeps its one empty slot) or counts that are not specialised.
+BakedScene bakeScene(const GpuScene& gpuScene);

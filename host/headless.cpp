@@ -65,8 +65,9 @@ int renderHeadless(const RenderOptions& options, uint32_t extraFrames, HeadlessR
     renderer.accumulate = perSample;
     uploadScene(renderer, gpuScene);
     times.upload = lapMs(t);
+    // The camera is fixed: the kernel is built around the scene's values where it is small.
     preparePipeline(renderer, {gpuScene.shape, OUTPUT_SHADED, uint32_t(job.filterBox ? FILTER_BOX : FILTER_POINT),
-                               job.samplesPerSide, perSample});
+                               job.samplesPerSide, perSample, bakeScene(gpuScene)});
     times.pipeline = lapMs(t);
     auto frame = [&] {  // one image; its GPU time
       if (!perSample) {

@@ -7,6 +7,7 @@
 #include "trace_point_spv.h"
 
 #include <cstddef>
+#include <vector>
 
 VkDescriptorSetLayout createTraceSetLayout(const Device& device) {
   auto binding = [](uint32_t index, VkDescriptorType type) {
@@ -72,7 +73,7 @@ VkPipeline createTracePipeline(const Device& device, VkPipelineLayout layout, co
     bytes = sizeof(trace_box_spv);
   }
 
-  const VkSpecializationMapEntry entries[] = {
+  std::vector<VkSpecializationMapEntry> entries = {
       {SPEC_SPHERE_TEXTURE_KINDS, offsetof(PipelineKey, shape.sphereKinds), sizeof(uint32_t)},
       {SPEC_PLANE_TEXTURE_KINDS, offsetof(PipelineKey, shape.planeKinds), sizeof(uint32_t)},
       {SPEC_SPHERE_COUNT, offsetof(PipelineKey, shape.sphereCount), sizeof(uint32_t)},
@@ -81,10 +82,14 @@ VkPipeline createTracePipeline(const Device& device, VkPipelineLayout layout, co
       {SPEC_OUTPUT_MODE, offsetof(PipelineKey, outputMode), sizeof(uint32_t)},
       {SPEC_SAMPLES_PER_SIDE, offsetof(PipelineKey, samplesPerSide), sizeof(uint32_t)},
       {SPEC_PROGRESSIVE, offsetof(PipelineKey, progressive), sizeof(VkBool32)},
+      {SPEC_BAKED, offsetof(PipelineKey, baked.enabled), sizeof(VkBool32)},
+      {SPEC_BAKED_MATERIAL_COUNT, offsetof(PipelineKey, baked.materialCount), sizeof(uint32_t)},
   };
+  for (uint32_t i = 0; key.baked.enabled && i < BAKED_WORD_COUNT; ++i)
+    entries.push_back({SPEC_BAKED_WORDS + i, uint32_t(offsetof(PipelineKey, baked.words) + 4 * i), sizeof(uint32_t)});
   VkSpecializationInfo specialization{};
-  specialization.mapEntryCount = uint32_t(std::size(entries));
-  specialization.pMapEntries = entries;
+  specialization.mapEntryCount = uint32_t(entries.size());
+  specialization.pMapEntries = entries.data();
   specialization.dataSize = sizeof(PipelineKey);
   specialization.pData = &key;
   // warmPipeline dispatches past the image: the base needs VK_PIPELINE_CREATE_DISPATCH_BASE_BIT.

@@ -16,10 +16,11 @@ struct PipelineKey {
   uint32_t textureFilter = 0;    // FILTER_*: selects the kernel's build variant
   uint32_t samplesPerSide = 1;   // N x N samples per pixel
   uint32_t progressive = 0;      // 1: one sample per dispatch, accumulated (SPEC_PROGRESSIVE)
+  BakedScene baked;              // the scene's values (SPEC_BAKED), when its camera is fixed
   bool operator==(const PipelineKey& o) const {
     return shape == o.shape && outputMode == o.outputMode &&
            textureFilter == o.textureFilter && samplesPerSide == o.samplesPerSide &&
-           progressive == o.progressive;
+           progressive == o.progressive && baked == o.baked;
   }
 };
 

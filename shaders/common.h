@@ -77,6 +77,23 @@ using uvec4 = glm::uvec4;
 #define MAX_SPECIALISED_COUNT 8
 #define COUNT_FROM_FRAME 0xFFFFFFFFu
 
+// Scenes with at most these many of each get kernels with the values of their spheres, planes,
+// lights and materials built in (SPEC_BAKED, shaders/baked.glsl): headless renders, whose camera
+// (and so the camera-relative positions) is fixed. The words are laid out as the uniform
+// blocks' structs: BAKED_SPHERE_WORD + 8 k is sphere k, and so on.
+#define SPEC_BAKED 8                  // 1: the kernel reads the BAKED_* words, not the uniform blocks
+#define SPEC_BAKED_MATERIAL_COUNT 9   // the scene's materials (at most MAX_BAKED_MATERIALS)
+#define SPEC_BAKED_WORDS 1000         // constant_id of word 0
+#define MAX_BAKED_SPHERES 4u
+#define MAX_BAKED_PLANES 4u
+#define MAX_BAKED_LIGHTS 4u
+#define MAX_BAKED_MATERIALS 8u   // one per object: any scene within the object limits
+#define BAKED_SPHERE_WORD 0u          // 4 spheres of 8 words
+#define BAKED_PLANE_WORD 32u          // 4 planes of 24 words
+#define BAKED_LIGHT_WORD 128u         // 4 lights of 8 words
+#define BAKED_MATERIAL_WORD 160u      // 8 materials of 28 words
+#define BAKED_WORD_COUNT 390          // 384 used; baked.glsl declares them ten at a time
+
 // Texture filtering: a build variant of the kernel (RAYTEX_FILTER_BOX), not a constant.
 #define FILTER_POINT 0  // point-sample textures at the hit (the course's method)
 #define FILTER_BOX 1    // average over the sample's footprint (ray differentials), where the
@@ -169,6 +186,11 @@ static_assert(sizeof(Plane) == 96, "Plane layout");
 static_assert(sizeof(Material) == 112, "Material layout");
 static_assert(sizeof(Light) == 32, "Light layout");
 static_assert(sizeof(NoiseTable) == NOISE_PERM_SIZE * 4, "NoiseTable layout");
+static_assert(BAKED_PLANE_WORD == BAKED_SPHERE_WORD + MAX_BAKED_SPHERES * sizeof(Sphere) / 4 &&
+                  BAKED_LIGHT_WORD == BAKED_PLANE_WORD + MAX_BAKED_PLANES * sizeof(Plane) / 4 &&
+                  BAKED_MATERIAL_WORD == BAKED_LIGHT_WORD + MAX_BAKED_LIGHTS * sizeof(Light) / 4 &&
+                  BAKED_MATERIAL_WORD + MAX_BAKED_MATERIALS * sizeof(Material) / 4 <= BAKED_WORD_COUNT,
+              "baked scene layout");
 }  // namespace gpu
 #endif
 

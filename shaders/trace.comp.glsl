@@ -23,6 +23,8 @@ layout(constant_id = SPEC_OUTPUT_MODE) const uint OUTPUT_MODE = OUTPUT_SHADED;
 // doubled the 1-sample frame time on lavapipe (119 -> 216 ms at 1080p).
 layout(constant_id = SPEC_SAMPLES_PER_SIDE) const uint SAMPLES_PER_SIDE = 1u;
 layout(constant_id = SPEC_PROGRESSIVE) const bool PROGRESSIVE = false;
+layout(constant_id = SPEC_BAKED) const bool BAKED = false;
+layout(constant_id = SPEC_BAKED_MATERIAL_COUNT) const uint BAKED_MATERIAL_COUNT = 1u;
 
 layout(std430, binding = BINDING_OUTPUT) writeonly buffer OutputBlock { vec4 outputPixels[]; };
 layout(std140, binding = BINDING_FRAME) uniform FrameBlock { Frame frameBlock; };
@@ -34,6 +36,8 @@ layout(std140, binding = BINDING_NOISE) uniform NoiseBlock { NoiseTable noiseTab
 layout(binding = BINDING_IMAGES) uniform sampler2DArray images;
 layout(std430, binding = BINDING_ACCUMULATION) buffer AccumulationBlock { vec4 accumulation[]; };
 layout(binding = BINDING_DISPLAY, r32ui) uniform writeonly uimage2D displayImage;
+
+#include "baked.glsl"
 
 // The frame and, where the kernel is specialised to the scene's counts, its spheres, planes
 // and lights, copied from the uniform blocks at the start of main, before any branch: lavapipe
@@ -52,11 +56,20 @@ Light lightCache[LIGHT_CACHE];
 void cacheScene() {
   frame = frameBlock;
   if (SPHERE_COUNT != COUNT_FROM_FRAME)
-    for (uint i = 0u; i < SPHERE_CACHE; ++i) sphereCache[i] = sphereBlock[i];
+    for (uint i = 0u; i < SPHERE_CACHE; ++i) {
+      if (BAKED) sphereCache[i] = bakedSphere(i);
+      else sphereCache[i] = sphereBlock[i];
+    }
   if (PLANE_COUNT != COUNT_FROM_FRAME)
-    for (uint i = 0u; i < PLANE_CACHE; ++i) planeCache[i] = planeBlock[i];
+    for (uint i = 0u; i < PLANE_CACHE; ++i) {
+      if (BAKED) planeCache[i] = bakedPlane(i);
+      else planeCache[i] = planeBlock[i];
+    }
   if (LIGHT_COUNT != COUNT_FROM_FRAME)
-    for (uint i = 0u; i < LIGHT_CACHE; ++i) lightCache[i] = lightBlock[i];
+    for (uint i = 0u; i < LIGHT_CACHE; ++i) {
+      if (BAKED) lightCache[i] = bakedLight(i);
+      else lightCache[i] = lightBlock[i];
+    }
 }
 
 // Item i; i may differ between invocations (a hit's index): a cached item is then picked
@@ -80,6 +93,15 @@ Plane planeAt(uint i) {
 Light lightAt(uint i) {
   if (LIGHT_COUNT == COUNT_FROM_FRAME) return lightBlock[i];
   return lightCache[i];
+}
+
+// Material i (i differs between invocations): picked from the baked materials with selects.
+Material materialAt(uint i) {
+  if (!BAKED) return materials[i];
+  Material m = bakedMaterial(0u);
+  for (uint k = 1u; k < BAKED_MATERIAL_COUNT; ++k)
+    if (i == k) m = bakedMaterial(k);
+  return m;
 }
 
 // Loop bounds: constants where the kernel is specialised to the scene's counts.
@@ -153,7 +175,7 @@ vec3 radiance(vec3 origin, vec2 film, float spacing) {
   Hit hit = closestHit(origin, dir);
   if (hit.kind == HIT_NONE) return frame.background.rgb;
   Surface s = surfaceAt(hit, origin, dir);
-  Material m = materials[s.material];
+  Material m = materialAt(s.material);
   vec3 albedo = albedoAt(hit, s, m, origin, film, spacing);
   return shade(s, m, albedo, -dir);
 }
@@ -165,7 +187,7 @@ vec4 debugOutput(vec3 origin, vec2 film) {
   Hit hit = closestHit(origin, dir);
   if (hit.kind == HIT_NONE) return vec4(0.0);
   Surface s = surfaceAt(hit, origin, dir);
-  Material m = materials[s.material];
+  Material m = materialAt(s.material);
   if (OUTPUT_MODE == OUTPUT_ALBEDO)
     return vec4(albedoAt(hit, s, m, origin, film, 1.0), float(hit.kind));
   bool solid = m.textureKind != TEX_IMAGE && m.textureKind != TEX_CHECKER && m.textureKind != TEX_NONE;

@@ -32,13 +32,16 @@ class RenderTest : public ::testing::Test {
   }
 
   // Renders and returns linear RGBA floats (a copy: the readback buffer is reused). The
-  // kernel is specialised to the scene, or to `shape` if given.
+  // kernel is specialised to the scene, or to `shape` if given; `baked`: built around the
+  // scene's values as in raytex render (bakeScene), or around `bakedScene` if given.
   std::vector<float> render(const Scene& scene, uint32_t width, uint32_t height, uint32_t mode,
                             uint32_t samplesPerSide = 1, uint32_t filter = FILTER_POINT,
-                            const SceneShape* shape = nullptr) {
+                            const SceneShape* shape = nullptr, bool baked = false,
+                            const BakedScene* bakedScene = nullptr) {
     GpuScene gpuScene = buildGpuScene(scene, width, height);
     uploadScene(*renderer_, gpuScene);
-    preparePipeline(*renderer_, {shape ? *shape : gpuScene.shape, mode, filter, samplesPerSide});
+    BakedScene values = bakedScene ? *bakedScene : baked ? bakeScene(gpuScene) : BakedScene{};
+    preparePipeline(*renderer_, {shape ? *shape : gpuScene.shape, mode, filter, samplesPerSide, 0, values});
     renderFrame(*renderer_);
     readbackFrame(*renderer_);
     const float* pixels = framePixels(*renderer_);

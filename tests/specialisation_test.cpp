@@ -1,13 +1,15 @@
 // Kernels specialised to a scene (texture kinds per shape, object and light counts built in)
 // must render exactly what the unspecialised kernel renders: every kind compiled in and the
 // loops bounded by Frame's counts. Scenes at and over MAX_SPECIALISED_COUNT cover both the
-// unrolled and the run-time loops.
+// unrolled and the run-time loops. Kernels built around a scene's values (bakeScene, what
+// raytex render uses) must render exactly what the kernel reading them from buffers renders.
 #include "gpu_fixture.h"
 #include "gpu_scene.h"
 #include "parser.h"
 
 #include <gtest/gtest.h>
 
+#include <cstring>
 #include <string>
 
 namespace {
@@ -63,6 +65,47 @@ TEST_F(SpecialisationTest, CourseMaterialsMatchTheUnspecialisedKernel) {
     for (const char* m : materials)
       EXPECT_EQ(differences(courseScene(m, "aChecker"), filter), 0u) << m << " filter " << filter;
   EXPECT_EQ(differences(courseScene("aChecker", "aMarble"), FILTER_POINT), 0u);
+}
+
+// Bit for bit, every output, both filters, one and four samples: the values folded into the
+// kernel's code are the same floats, and the operations on them the same.
+TEST_F(SpecialisationTest, BakedKernelsMatchTheUniformBuffers) {
+  const char* materials[] = {"aSolidChecker", "aNoise",      "aMarble",       "aWood",
+                             "anImage",       "aTurbulence", "aDturbulence", "aChecker"};
+  for (const char* m : materials) {
+    Scene scene = courseScene(m, "aChecker");
+    ASSERT_TRUE(bakeScene(buildGpuScene(scene, kWidth, kHeight)).enabled);
+    for (uint32_t mode : {uint32_t(OUTPUT_SHADED), uint32_t(OUTPUT_COORDS), uint32_t(OUTPUT_ALBEDO)})
+      for (uint32_t filter : {uint32_t(FILTER_POINT), uint32_t(FILTER_BOX)})
+        for (uint32_t side : {1u, 2u}) {
+          if (mode != OUTPUT_SHADED && (filter == FILTER_BOX || side > 1)) continue;
+          std::vector<float> baked = render(scene, kWidth, kHeight, mode, side, filter, nullptr, true);
+          std::vector<float> buffers = render(scene, kWidth, kHeight, mode, side, filter);
+          EXPECT_EQ(baked, buffers) << m << " output " << mode << " filter " << filter << " side " << side;
+        }
+  }
+  // Up to MAX_BAKED_SPHERES spheres with four materials, two planes and two lights.
+  Scene row = rowScene(int(MAX_BAKED_SPHERES));
+  ASSERT_TRUE(bakeScene(buildGpuScene(row, kWidth, kHeight)).enabled);
+  EXPECT_EQ(render(row, kWidth, kHeight, OUTPUT_SHADED, 1, FILTER_POINT, nullptr, true),
+            render(row, kWidth, kHeight, OUTPUT_SHADED));
+}
+
+TEST_F(SpecialisationTest, OnlySmallScenesAreBaked) {
+  EXPECT_TRUE(bakeScene(buildGpuScene(rowScene(int(MAX_BAKED_SPHERES)), 8, 8)).enabled);
+  EXPECT_FALSE(bakeScene(buildGpuScene(rowScene(int(MAX_BAKED_SPHERES) + 1), 8, 8)).enabled);
+}
+
+// The check can fail: a kernel baked with another sphere radius renders another image.
+TEST_F(SpecialisationTest, AWrongBakedValueChangesTheImage) {
+  Scene scene = courseScene("aChecker", "aChecker");
+  BakedScene baked = bakeScene(buildGpuScene(scene, kWidth, kHeight));
+  gpu::Sphere sphere;
+  std::memcpy(&sphere, baked.words.data() + BAKED_SPHERE_WORD, sizeof(sphere));
+  sphere.centerRadius.w *= 0.5f;
+  std::memcpy(baked.words.data() + BAKED_SPHERE_WORD, &sphere, sizeof(sphere));
+  EXPECT_NE(render(scene, kWidth, kHeight, OUTPUT_SHADED, 1, FILTER_POINT, nullptr, false, &baked),
+            render(scene, kWidth, kHeight, OUTPUT_SHADED));
 }
 
 TEST_F(SpecialisationTest, CountsAtAndOverTheLimitMatch) {
