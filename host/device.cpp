@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <cstring>
+#include <iterator>
 #include <vector>
 
 namespace {
@@ -31,6 +32,16 @@ bool hasLayer(const char* name) {
   if (vkEnumerateInstanceLayerProperties(&count, layers.data()) != VK_SUCCESS) return false;
   for (const VkLayerProperties& layer : layers)
     if (strcmp(layer.layerName, name) == 0) return true;
+  return false;
+}
+
+bool layerHasExtension(const char* layer, const char* name) {
+  uint32_t count = 0;
+  if (vkEnumerateInstanceExtensionProperties(layer, &count, nullptr) != VK_SUCCESS) return false;
+  std::vector<VkExtensionProperties> extensions(count);
+  if (vkEnumerateInstanceExtensionProperties(layer, &count, extensions.data()) != VK_SUCCESS) return false;
+  for (const VkExtensionProperties& e : extensions)
+    if (strcmp(e.extensionName, name) == 0) return true;
   return false;
 }
 
@@ -78,9 +89,19 @@ VkInstance createInstance(bool validation, const std::vector<const char*>& windo
   if (validation) extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
   VkInstanceCreateInfo info{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
   info.pApplicationInfo = &app;
+  // With validation, synchronization validation too: hazards between the kernel's writes,
+  // the readback and the copies to the swapchain are errors like any other.
+  const VkValidationFeatureEnableEXT enables[] = {VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT};
+  VkValidationFeaturesEXT features{VK_STRUCTURE_TYPE_VALIDATION_FEATURES_EXT};
+  features.enabledValidationFeatureCount = uint32_t(std::size(enables));
+  features.pEnabledValidationFeatures = enables;
   if (validation) {
     info.enabledLayerCount = 1;
     info.ppEnabledLayerNames = &kValidationLayer;
+    if (layerHasExtension(kValidationLayer, VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME)) {
+      extensions.push_back(VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME);
+      info.pNext = &features;
+    }
   }
   info.enabledExtensionCount = uint32_t(extensions.size());
   info.ppEnabledExtensionNames = extensions.data();

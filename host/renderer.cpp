@@ -58,7 +58,29 @@ VkDeviceSize accumulationBytes(const Renderer& r, uint32_t width, uint32_t heigh
   return r.accumulate ? VkDeviceSize(width) * height * 16 : 16;
 }
 
+// Refuses, before allocating anything, an output the device cannot hold: the kernel's output
+// (and, accumulating, the running sums) is one storage buffer of a vec4 per pixel, within
+// maxStorageBufferRange, and all of it must fit the heap of host-visible memory.
+void checkOutputFits(const Renderer& r, uint32_t width, uint32_t height) {
+  const VkDeviceSize buffer = VkDeviceSize(width) * height * 16;
+  const VkDeviceSize total = r.accumulate ? 2 * buffer + VkDeviceSize(width) * height * 4 : buffer;
+  const std::string size = std::to_string(width) + "x" + std::to_string(height);
+  const VkDeviceSize range = r.device.properties.limits.maxStorageBufferRange;
+  if (buffer > range)
+    throw VulkanError(size + " needs a " + mebibytes(buffer) + " output buffer; this device's storage buffers hold at most " +
+                      mebibytes(range) + " (maxStorageBufferRange): render a smaller image");
+  VkDeviceSize heap = 0;
+  const VkPhysicalDeviceMemoryProperties& mem = r.device.memory;
+  for (uint32_t i = 0; i < mem.memoryTypeCount; ++i)
+    if (mem.memoryTypes[i].propertyFlags & VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT)
+      heap = std::max(heap, mem.memoryHeaps[mem.memoryTypes[i].heapIndex].size);
+  if (total > heap)
+    throw VulkanError(size + " needs " + mebibytes(total) + " of device memory; this device's host-visible heap holds " +
+                      mebibytes(heap) + ": render a smaller image");
+}
+
 void createOutput(Renderer& r, uint32_t width, uint32_t height) {
+  checkOutputFits(r, width, height);
   destroyBuffer(r.device, r.pixels);
   destroyBuffer(r.device, r.accumulation);
   destroyImage(r.device, r.display);

@@ -23,11 +23,19 @@ VkDeviceMemory allocate(const Device& device, const VkMemoryRequirements& req,
   info.allocationSize = req.size;
   info.memoryTypeIndex = findMemoryType(device, req.memoryTypeBits, wanted, preferred);
   VkDeviceMemory memory = VK_NULL_HANDLE;
-  VK_CHECK(vkAllocateMemory(device.device, &info, nullptr, &memory));
+  VkResult result = vkAllocateMemory(device.device, &info, nullptr, &memory);
+  if (result == VK_ERROR_OUT_OF_DEVICE_MEMORY || result == VK_ERROR_OUT_OF_HOST_MEMORY)
+    throw VulkanError("out of memory: the Vulkan device could not allocate " + mebibytes(req.size) +
+                      " (its memory heap holds " +
+                      mebibytes(device.memory.memoryHeaps[device.memory.memoryTypes[info.memoryTypeIndex].heapIndex].size) +
+                      "); try a smaller image");
+  VK_CHECK(result);
   return memory;
 }
 
 }  // namespace
+
+std::string mebibytes(VkDeviceSize bytes) { return std::to_string((bytes + (1u << 20) - 1) >> 20) + " MiB"; }
 
 Buffer createBuffer(const Device& device, VkDeviceSize size, VkBufferUsageFlags usage) {
   Buffer b;
@@ -37,18 +45,22 @@ Buffer createBuffer(const Device& device, VkDeviceSize size, VkBufferUsageFlags 
   info.usage = usage;
   info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
   VK_CHECK(vkCreateBuffer(device.device, &info, nullptr, &b.buffer));
-  VkMemoryRequirements req;
-  vkGetBufferMemoryRequirements(device.device, b.buffer, &req);
-  // Buffers the device writes and the host reads (copy targets, the kernel's storage buffers)
-  // prefer cached memory: uncached reads are slow on discrete GPUs.
-  VkMemoryPropertyFlags preferred =
-      (usage & (VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT)) ? VK_MEMORY_PROPERTY_HOST_CACHED_BIT
-                                                                                          : 0;
-  b.memory = allocate(device, req,
-                      VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT,
-                      preferred);
-  VK_CHECK(vkBindBufferMemory(device.device, b.buffer, b.memory, 0));
-  VK_CHECK(vkMapMemory(device.device, b.memory, 0, VK_WHOLE_SIZE, 0, &b.data));
+  try {
+    VkMemoryRequirements req;
+    vkGetBufferMemoryRequirements(device.device, b.buffer, &req);
+    // Buffers the device writes and the host reads (copy targets, the kernel's storage buffers)
+    // prefer cached memory: uncached reads are slow on discrete GPUs.
+    VkMemoryPropertyFlags preferred = (usage & (VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT))
+                                          ? VK_MEMORY_PROPERTY_HOST_CACHED_BIT
+                                          : 0;
+    b.memory = allocate(device, req, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT,
+                        preferred);
+    VK_CHECK(vkBindBufferMemory(device.device, b.buffer, b.memory, 0));
+    VK_CHECK(vkMapMemory(device.device, b.memory, 0, VK_WHOLE_SIZE, 0, &b.data));
+  } catch (...) {
+    destroyBuffer(device, b);  // no half-made buffer left behind
+    throw;
+  }
   return b;
 }
 
@@ -83,17 +95,22 @@ Image createImage(const Device& device, uint32_t width, uint32_t height, uint32_
   info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
   info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
   VK_CHECK(vkCreateImage(device.device, &info, nullptr, &img.image));
-  VkMemoryRequirements req;
-  vkGetImageMemoryRequirements(device.device, img.image, &req);
-  img.memory = allocate(device, req, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, 0);
-  VK_CHECK(vkBindImageMemory(device.device, img.image, img.memory, 0));
+  try {
+    VkMemoryRequirements req;
+    vkGetImageMemoryRequirements(device.device, img.image, &req);
+    img.memory = allocate(device, req, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, 0);
+    VK_CHECK(vkBindImageMemory(device.device, img.image, img.memory, 0));
 
-  VkImageViewCreateInfo viewInfo{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
-  viewInfo.image = img.image;
-  viewInfo.viewType = asArray ? VK_IMAGE_VIEW_TYPE_2D_ARRAY : VK_IMAGE_VIEW_TYPE_2D;
-  viewInfo.format = format;
-  viewInfo.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, levels, 0, layers};
-  VK_CHECK(vkCreateImageView(device.device, &viewInfo, nullptr, &img.view));
+    VkImageViewCreateInfo viewInfo{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+    viewInfo.image = img.image;
+    viewInfo.viewType = asArray ? VK_IMAGE_VIEW_TYPE_2D_ARRAY : VK_IMAGE_VIEW_TYPE_2D;
+    viewInfo.format = format;
+    viewInfo.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, levels, 0, layers};
+    VK_CHECK(vkCreateImageView(device.device, &viewInfo, nullptr, &img.view));
+  } catch (...) {
+    destroyImage(device, img);
+    throw;
+  }
   return img;
 }
 

@@ -4,6 +4,7 @@
 #include "device.h"
 
 #include <initializer_list>
+#include <string>
 
 struct Buffer {
   VkBuffer buffer = VK_NULL_HANDLE;
@@ -22,6 +23,7 @@ struct Image {
 };
 
 // Host-visible, coherent, mapped. size 0 is rounded up to 16 bytes so a binding always exists.
+// Out of memory: a VulkanError naming the size (nothing left allocated).
 Buffer createBuffer(const Device& device, VkDeviceSize size, VkBufferUsageFlags usage);
 void destroyBuffer(const Device& device, Buffer& buffer);
 // Copies into a mapped buffer.
@@ -61,3 +63,6 @@ struct HostBytes {
 };
 void uploadImageLayers(const Device& device, Image& image, std::initializer_list<HostBytes> parts);
 void uploadImageLayers(const Device& device, Image& image, const void* pixels, VkDeviceSize bytes);
+
+// "N MiB", rounded up: sizes in messages.
+std::string mebibytes(VkDeviceSize bytes);

@@ -3,8 +3,8 @@
 # input), one-line errors, file:line:col for scenes, atomic output.
 # Usage: cli_test.sh RAYTEX SOURCE_DIR
 set -u
-raytex=$1
-src=$2
+raytex=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
+src=$(cd "$2" && pwd)  # both absolute: some checks run in other directories
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 passed=0
@@ -49,6 +49,36 @@ check no-driver-no-output test ! -e "$tmp/none.png"
 
 expect unwritable 1 "cannot write '$tmp/no/dir/x.png'" -- "$raytex" render "$src/scenes/textures.cfg" \
   -o "$tmp/no/dir/x.png" --width 32 --height 24
+
+# A full disk: a file size limit of 1 KiB makes the write fail as a full file system would (EFBIG
+# here, ENOSPC there; SIGXFSZ ignored so that write returns the error). One line, exit 1, and
+# neither the PNG nor its temporary file is left.
+expect full-disk 1 "^raytex: cannot write '$tmp/full.png': File too large$" -- bash -c \
+  'trap "" XFSZ; ulimit -f 1; exec "$0" render "$1" -o "$2" --width 320 --height 240' \
+  "$raytex" "$src/scenes/textures.cfg" "$tmp/full.png"
+check full-disk-no-output test ! -e "$tmp/full.png"
+check full-disk-no-temp-file test "$(ls "$tmp" | grep -c 'full.png.tmp')" -eq 0
+
+# Large renders: over the command line's limit, refused before any work; over the device's (on
+# lavapipe a storage buffer holds 128 MiB, 8.4 Mpixel of vec4s), refused before allocating.
+expect huge-16384 2 '^raytex: 16384x16384 exceeds the limit of 67108864 pixels \(8192x8192\)$' -- \
+  "$raytex" render "$src/scenes/textures.cfg" -o "$tmp/huge.png" --width 16384 --height 16384
+expect over-device-limit 1 '^raytex: 4096x4096 needs a 256 MiB output buffer; .*at most 128 MiB \(maxStorageBufferRange\)' -- \
+  env VK_ICD_FILENAMES=/usr/share/vulkan/icd.d/lvp_icd.x86_64.json "$raytex" render "$src/scenes/textures.cfg" \
+  -o "$tmp/huge.png" --width 4096 --height 4096
+check huge-no-output test ! -e "$tmp/huge.png"
+# Out of memory: with 500 MB of address space lavapipe starts, but cannot allocate a 4K image's
+# 127 MiB output buffer. (With less than about 250 MB, lavapipe's own vkCreateDevice crashes.)
+expect out-of-memory 1 '^raytex: out of memory: the Vulkan device could not allocate 127 MiB' -- \
+  env LP_NUM_THREADS=2 bash -c 'ulimit -v 500000; exec "$0" render "$1" -o "$2" --width 3840 --height 2160' \
+  "$raytex" "$src/scenes/textures.cfg" "$tmp/oom.png"
+check out-of-memory-no-output test ! -e "$tmp/oom.png"
+
+# Validation layers, synchronization validation included, find nothing in a headless render.
+expect validate-clean 0 '' -- "$raytex" render "$src/scenes/textures.cfg" -o "$tmp/valid.png" --width 64 \
+  --height 48 --spp 4 --validate
+check validate-no-errors bash -c "! '$raytex' render '$src/scenes/textures.cfg' -o '$tmp/valid.png' --width 64 \
+  --height 48 --spp 4 --validate 2>&1 | grep -q 'validation'"
 
 # Success: a PNG of the requested size, and the stats line.
 expect render 0 '^device [0-9.]+ ms \| parse [0-9.]+ ms .* encode [0-9.]+ ms \| 64x48, 1 spp$' -- \

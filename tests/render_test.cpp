@@ -289,4 +289,18 @@ TEST_F(RenderTest, DefaultSceneHasShadowOnPlane) {
   EXPECT_EQ(wrong, 0);
 }
 
+// The suite's zero-error check covers synchronization too: two writes to one buffer with no
+// barrier between them are a write-after-write hazard, which the layer must report.
+TEST_F(RenderTest, SynchronizationValidationReportsAHazard) {
+  const Device& device = renderer_->device;
+  Buffer buffer = createBuffer(device, 256, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+  VkCommandBuffer cmd = beginCommands(device);
+  vkCmdFillBuffer(cmd, buffer.buffer, 0, VK_WHOLE_SIZE, 1u);
+  vkCmdFillBuffer(cmd, buffer.buffer, 0, VK_WHOLE_SIZE, 2u);
+  submitAndWait(device, cmd);
+  destroyBuffer(device, buffer);
+  EXPECT_GT(renderer_->device.validationErrors, errorsBefore_);
+  errorsBefore_ = renderer_->device.validationErrors;  // expected: not a failure of the suite
+}
+
 }  // namespace
