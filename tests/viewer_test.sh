@@ -31,13 +31,24 @@ check() {  # check NAME CONDITION...
   if "$@"; then passed=$((passed + 1)); else failed=$((failed + 1)); echo "FAIL $name"; fi
 }
 for _ in $(seq 50); do xdotool getdisplaygeometry >/dev/null 2>&1 && break; sleep 0.1; done
+# waitWindow LOG CHECK: sets wid to the viewer's window, up to a minute (with validation
+# layers, under load or under the sanitizers start-up is slow); without one, nothing else can
+# be checked: the viewer's last output lines, and exit.
+waitWindow() {
+  wid=""
+  for _ in $(seq 600); do wid=$(xdotool search --name '^raytex' 2>/dev/null | head -1); [ -n "$wid" ] && break; sleep 0.1; done
+  if [ -z "$wid" ]; then
+    echo "FAIL $2; the viewer's output:"
+    tail -5 "$1"
+    exit 1
+  fi
+  check "$2" test -n "$wid"
+}
 
 "$raytex" view "$src/scenes/textures.cfg" -o "$tmp/shot.png" --width 320 --height 240 --validate \
   >"$tmp/view.log" 2>&1 &
 viewer=$!
-wid=""
-for _ in $(seq 100); do wid=$(xdotool search --name '^raytex' 2>/dev/null | head -1); [ -n "$wid" ] && break; sleep 0.1; done
-check window-opens test -n "$wid"
+waitWindow "$tmp/view.log" window-opens
 title() { xdotool getwindowname "$wid"; }
 waitTitle() {  # waitTitle PATTERN: the title matches within 10 s
   for _ in $(seq 100); do title | grep -q -- "$1" && return 0; sleep 0.1; done
@@ -100,9 +111,7 @@ cp "$src/scenes/textures.cfg" "$src/scenes/texture_include.cfg" "$tmp/scenes/"
 ln -s "$src/textures" "$tmp/textures"
 "$raytex" view "$tmp/scenes/textures.cfg" --width 160 --height 120 --validate >"$tmp/reload.log" 2>&1 &
 viewer=$!
-wid=""
-for _ in $(seq 100); do wid=$(xdotool search --name '^raytex' 2>/dev/null | head -1); [ -n "$wid" ] && break; sleep 0.1; done
-check reload-window-opens test -n "$wid"
+waitWindow "$tmp/reload.log" reload-window-opens
 check reload-initial waitTitle 'sphere: aSolidChecker'
 sed -i -e 's|^    aSolidChecker;|    // aSolidChecker;|' -e 's|^    // aWood;|    aWood;|' "$tmp/scenes/textures.cfg"
 check reload-applies waitTitle 'sphere: aWood .*reloaded'

@@ -1,0 +1,18 @@
+#!/usr/bin/env bash
+# The whole test suite (all but the fuzz label, which has its own ASan build) built with ASan and
+# UBSan, on lavapipe. Any sanitizer report fails the test that caused it. CI runs this after the
+# README's test command.
+# Usage: tests/sanitize/run.sh [BUILD_DIR]   (default build-sanitize)
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+build=${1:-build-sanitize}
+cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRAYTEX_SANITIZE=ON >/dev/null
+cmake --build "$build"
+supp=$PWD/tests/sanitize
+# detect_leaks: on, with the driver's and loader's own allocations suppressed (lsan.supp says
+# which and why). abort_on_error: a report is a failing exit, even where a caller ignores codes.
+export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:strict_string_checks=1:detect_stack_use_after_return=1
+export LSAN_OPTIONS=suppressions=$supp/lsan.supp:print_suppressions=0
+export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+export RAYTEX_SANITIZED=1  # tests/cli_test.sh: skip the address-space limit test (ASan's shadow needs terabytes)
+ctest --test-dir "$build" -LE fuzz --output-on-failure -j2
