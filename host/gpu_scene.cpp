@@ -82,6 +82,7 @@ gpu::Frame cameraFrame(const Camera& camera, uint32_t width, uint32_t height) {
   f.cameraForward = v4(glm::vec3(forward));
   f.width = width;
   f.height = height;
+  f.bandRows = height;  // one band: the renderer narrows it where the image needs several
   return f;
 }
 

@@ -4,6 +4,7 @@
 #include "parser.h"
 #include "renderer.h"
 
+#include <algorithm>
 #include <cstdio>
 
 double lapMs(std::chrono::steady_clock::time_point& start) {
@@ -69,7 +70,8 @@ int renderHeadless(const RenderOptions& options, uint32_t extraFrames, HeadlessR
     preparePipeline(renderer, {gpuScene.shape, OUTPUT_SHADED, uint32_t(job.filterBox ? FILTER_BOX : FILTER_POINT),
                                job.samplesPerSide, perSample, bakeScene(gpuScene)});
     times.pipeline = lapMs(t);
-    auto frame = [&] {  // one image; its GPU time
+    auto renderBand = [&](uint32_t firstRow) {  // one band of the image; its GPU time
+      selectBand(renderer, firstRow);
       if (!perSample) {
         renderFrame(renderer);
         return renderer.lastFrameMs;
@@ -81,12 +83,39 @@ int renderHeadless(const RenderOptions& options, uint32_t extraFrames, HeadlessR
       }
       return ms;
     };
-    frame();
-    times.firstDispatch = lapMs(t);
-    for (uint32_t i = 0; i < extraFrames; ++i) out->frameMs.push_back(frame());
+    // An image over the device's storage-buffer range is rendered in bands of rows, each read
+    // back and converted to 8 bits as soon as it is done (renderer.h, bandRows).
+    const uint32_t bands = bandCount(renderer);
+    out->nonFinite = 0;
+    if (bands > 1) {
+      image.width = int(job.width);
+      image.height = int(job.height);
+      image.pixels.resize(size_t(job.width) * job.height * 4);
+    }
+    auto keepBand = [&] {
+      readbackFrame(renderer);
+      size_t nonFinite = 0;
+      ImageRGBA8 band = encodeSrgb(framePixels(renderer), int(job.width), int(bandHeight(renderer)), &nonFinite);
+      out->nonFinite += nonFinite;
+      if (bands == 1) {
+        image = std::move(band);
+        return;
+      }
+      std::copy(band.pixels.begin(), band.pixels.end(),
+                image.pixels.begin() + ptrdiff_t(size_t(renderer.bandFirstRow) * job.width * 4));
+    };
+    for (uint32_t b = 0; b < bands; ++b) {
+      renderBand(b * renderer.bandRows);
+      if (bands > 1) keepBand();
+    }
+    times.firstDispatch = lapMs(t);  // several bands: their readbacks too
+    for (uint32_t i = 0; i < extraFrames; ++i) {
+      double ms = 0.0;
+      for (uint32_t b = 0; b < bands; ++b) ms += renderBand(b * renderer.bandRows);
+      out->frameMs.push_back(ms);
+    }
     t = std::chrono::steady_clock::now();  // the extra frames are not part of a render
-    readbackFrame(renderer);
-    image = encodeSrgb(framePixels(renderer), int(job.width), int(job.height), &out->nonFinite);
+    if (bands == 1) keepBand();
     times.readback = lapMs(t);
     int validationErrors = renderer.device.validationErrors;
     destroyRenderer(renderer);

@@ -58,17 +58,27 @@ VkDeviceSize accumulationBytes(const Renderer& r, uint32_t width, uint32_t heigh
   return r.accumulate ? VkDeviceSize(width) * height * 16 : 16;
 }
 
-// Refuses, before allocating anything, an output the device cannot hold: the kernel's output
-// (and, accumulating, the running sums) is one storage buffer of a vec4 per pixel, within
-// maxStorageBufferRange, and all of it must fit the heap of host-visible memory.
+// Rows of `width` vec4s one storage buffer holds (maxStorageBufferRange): the band height.
+uint32_t rowsPerBuffer(const Renderer& r, uint32_t width) {
+  return uint32_t(std::min<VkDeviceSize>(r.device.properties.limits.maxStorageBufferRange / (VkDeviceSize(width) * 16),
+                                         UINT32_MAX));
+}
+
+// Refuses, before allocating anything, an output the device cannot hold. The kernel's output
+// is a storage buffer of a vec4 per pixel within maxStorageBufferRange: over it, an image is
+// rendered in bands of rows, but progressive rendering (the running sums, the viewer) needs it
+// whole. All of it must fit the heap of host-visible memory.
 void checkOutputFits(const Renderer& r, uint32_t width, uint32_t height) {
-  const VkDeviceSize buffer = VkDeviceSize(width) * height * 16;
+  const uint32_t rows = std::min(height, rowsPerBuffer(r, width));
+  const VkDeviceSize buffer = VkDeviceSize(width) * (r.accumulate ? height : std::max(rows, 1u)) * 16;
   const VkDeviceSize total = r.accumulate ? 2 * buffer + VkDeviceSize(width) * height * 4 : buffer;
   const std::string size = std::to_string(width) + "x" + std::to_string(height);
   const VkDeviceSize range = r.device.properties.limits.maxStorageBufferRange;
   if (buffer > range)
-    throw VulkanError(size + " needs a " + mebibytes(buffer) + " output buffer; this device's storage buffers hold at most " +
-                      mebibytes(range) + " (maxStorageBufferRange): render a smaller image");
+    throw VulkanError(size + " needs a " + mebibytes(buffer) + " output buffer" +
+                      (r.accumulate ? " for progressive rendering" : " for one row") +
+                      "; this device's storage buffers hold at most " + mebibytes(range) +
+                      " (maxStorageBufferRange): render a smaller image");
   VkDeviceSize heap = 0;
   const VkPhysicalDeviceMemoryProperties& mem = r.device.memory;
   for (uint32_t i = 0; i < mem.memoryTypeCount; ++i)
@@ -91,7 +101,8 @@ void createOutput(Renderer& r, uint32_t width, uint32_t height) {
   // A storage buffer in host-visible memory, not an image: the host reads it in place, and
   // lavapipe stores one vec4 per lane instead of one image channel per lane (the default
   // scene's kernel: 386 -> 374 x86 instructions per pixel, bench/instructions.sh).
-  r.pixels = createBuffer(r.device, VkDeviceSize(width) * height * 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+  r.bandRows = r.accumulate ? height : std::min(height, rowsPerBuffer(r, width));
+  r.pixels = createBuffer(r.device, VkDeviceSize(width) * r.bandRows * 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
   VkCommandBuffer cmd = beginCommands(r.device);
   imageBarrier(cmd, r.display.image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL, 0, VK_ACCESS_SHADER_WRITE_BIT,
                VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
@@ -210,12 +221,14 @@ void uploadScene(Renderer& r, const GpuScene& s) {
   bool accumulationFits = r.accumulation.size == accumulationBytes(r, r.width, r.height);
   if (s.frame.width != r.width || s.frame.height != r.height || !r.pixels.buffer || !accumulationFits)
     createOutput(r, s.frame.width, s.frame.height);
+  selectBand(r, 0);
   writeDescriptors(r);
 }
 
 void updateSceneBuffers(Renderer& r, const GpuScene& s) {
   VK_CHECK(vkDeviceWaitIdle(r.device.device));
   writeBuffer(r.frame, &s.frame, sizeof(s.frame));
+  selectBand(r, r.bandFirstRow);
   writeBuffer(r.spheres, s.spheres.data(), sizeof(gpu::Sphere) * s.spheres.size());
   writeBuffer(r.planes, s.planes.data(), sizeof(gpu::Plane) * s.planes.size());
   writeBuffer(r.lights, s.lights.data(), sizeof(gpu::Light) * s.lights.size());
@@ -263,6 +276,18 @@ void warmPipeline(Renderer& r, const PipelineKey& key) {
   p.dispatched = true;
 }
 
+uint32_t bandCount(const Renderer& r) { return (r.height + r.bandRows - 1) / r.bandRows; }
+
+uint32_t bandHeight(const Renderer& r) { return std::min(r.bandRows, r.height - r.bandFirstRow); }
+
+void selectBand(Renderer& r, uint32_t firstRow) {
+  // Every earlier dispatch has completed (they all wait), so the mapped uniform can change.
+  r.bandFirstRow = firstRow;
+  gpu::Frame* frame = static_cast<gpu::Frame*>(r.frame.data);
+  frame->rowOffset = firstRow;
+  frame->bandRows = bandHeight(r);
+}
+
 void renderFrame(Renderer& r) {
   auto start = std::chrono::steady_clock::now();
   VkCommandBuffer cmd = beginCommands(r.device);
@@ -271,7 +296,7 @@ void renderFrame(Renderer& r) {
     vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, r.timestamps, 0);
   }
   bindAndDispatch(r, cmd, r.pipeline, 0, (r.width + WORKGROUP_X - 1) / WORKGROUP_X,
-                  (r.height + WORKGROUP_Y - 1) / WORKGROUP_Y);
+                  (bandHeight(r) + WORKGROUP_Y - 1) / WORKGROUP_Y);
   if (r.timestamps) vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, r.timestamps, 1);
   submitAndWait(r.device, cmd);
   cachedPipeline(r, r.pipelineKey).dispatched = true;
@@ -306,7 +331,7 @@ void readbackFrame(Renderer& r) {
     // sum times the last sample's weight, the kernel's own float multiply.
     const float* sums = static_cast<const float*>(r.accumulation.data);
     float* means = static_cast<float*>(r.pixels.data);
-    for (size_t i = 0; i < size_t(r.width) * r.height; ++i) {
+    for (size_t i = 0; i < size_t(r.width) * bandHeight(r); ++i) {
       for (size_t c = 0; c < 3; ++c) means[4 * i + c] = sums[4 * i + c] * r.sampleWeight;
       means[4 * i + 3] = 1.0f;
     }

@@ -39,6 +39,10 @@ struct Renderer {
   float sampleWeight = 1.0f;  // of the last renderSample: readbackFrame's mean = sum * weight
   Image images;     // sampler2DArray of image textures (1x1 placeholder when none)
   uint32_t width = 0, height = 0;
+  // The output holds bandRows rows: the whole image, or as many as one storage buffer holds
+  // (maxStorageBufferRange); the dispatches and readbacks cover the band from bandFirstRow.
+  uint32_t bandRows = 0;
+  uint32_t bandFirstRow = 0;
   VkQueryPool timestamps = VK_NULL_HANDLE;  // two per frame, around the dispatch
   double lastFrameMs = 0.0;  // GPU time of the last renderFrame (timestamps), else wall time
 };
@@ -62,7 +66,16 @@ bool pipelineWarm(const Renderer& renderer, const PipelineKey& key);
 // to it costs nothing; the current pipeline and the image stay as they were. Waits.
 void warmPipeline(Renderer& renderer, const PipelineKey& key);
 
-// Dispatches the kernel over the whole image; waits. Sets lastFrameMs.
+// How many bands of bandRows rows the image takes (1 unless over maxStorageBufferRange).
+uint32_t bandCount(const Renderer& renderer);
+// Makes the band from row firstRow (a multiple of bandRows) the one renderFrame renders and
+// readbackFrame reads. uploadScene selects band 0.
+void selectBand(Renderer& renderer, uint32_t firstRow);
+// Rows in the selected band.
+uint32_t bandHeight(const Renderer& renderer);
+
+// Dispatches the kernel over the selected band (the whole image when it is one); waits. Sets
+// lastFrameMs.
 void renderFrame(Renderer& renderer);
 
 // Progressive pipelines: adds sample `index` (0 restarts) of the N x N grid to the running sums
@@ -73,5 +86,5 @@ void renderSample(Renderer& renderer, uint32_t index);
 // Copies the rendered image into the host-visible readback buffer; waits.
 void readbackFrame(Renderer& renderer);
 
-// Linear RGBA floats, row 0 at the top, valid after readbackFrame.
+// Linear RGBA floats of the selected band, its row 0 at the top, valid after readbackFrame.
 const float* framePixels(const Renderer& renderer);

@@ -130,6 +130,12 @@ struct Frame {
   uint sampleIndex;    // progressive: which of the N x N samples this dispatch adds (row-major)
   float sampleWeight;  // progressive: 1 / (sampleIndex + 1), the mean's weight (host-computed)
   uint displayBgra;    // progressive: 1 packs BINDING_DISPLAY as B, G, R, A bytes, 0 as R, G, B, A
+  // The band of rows this dispatch renders, BINDING_OUTPUT holding its bandRows rows: an image
+  // whose vec4s pass maxStorageBufferRange is rendered band after band (renderer.h, selectBand).
+  uint rowOffset;
+  uint bandRows;
+  uint pad0;
+  uint pad1;
 };
 
 struct Sphere {
@@ -180,7 +186,7 @@ struct NoiseTable {
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(Frame) == 128, "Frame layout");
+static_assert(sizeof(Frame) == 144, "Frame layout");
 static_assert(sizeof(Sphere) == 32, "Sphere layout");
 static_assert(sizeof(Plane) == 96, "Plane layout");
 static_assert(sizeof(Material) == 112, "Material layout");

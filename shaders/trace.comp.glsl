@@ -210,10 +210,12 @@ uint displayPixel(vec3 linear) {
 void main() {
   cacheScene();
   // Invocations past the image's edge (in the last workgroups) trace the edge pixel and store
-  // nothing: an early return would put all that follows in divergent control flow.
+  // nothing: an early return would put all that follows in divergent control flow. Rows are
+  // counted from the band's first (frame.rowOffset), and so is the output's row.
   uvec2 id = gl_GlobalInvocationID.xy;
-  bool inside = id.x < frame.width && id.y < frame.height;
-  uvec2 pixel = min(id, uvec2(frame.width, frame.height) - 1u);
+  bool inside = id.x < frame.width && id.y < frame.bandRows;
+  uvec2 pixel = min(id + uvec2(0u, frame.rowOffset), uvec2(frame.width, frame.height) - 1u);
+  uint outputIndex = (pixel.y - frame.rowOffset) * frame.width + pixel.x;
   vec3 origin = frame.eye.xyz;
 #ifdef RAYTEX_DEBUG_OUTPUT
   vec4 result = debugOutput(origin, vec2(pixel) + 0.5);
@@ -226,7 +228,7 @@ void main() {
   const uint n = SAMPLES_PER_SIDE;
   vec4 result;
   if (PROGRESSIVE) {
-    uint i = pixel.y * frame.width + pixel.x;
+    uint i = outputIndex;
     uvec2 cell = uvec2(frame.sampleIndex % n, frame.sampleIndex / n);
     vec3 sum = frame.sampleIndex == 0u ? vec3(0.0) : accumulation[i].rgb;
     sum += radiance(origin, vec2(pixel) + (vec2(cell) + 0.5) / float(n), 1.0 / float(n));
@@ -243,5 +245,5 @@ void main() {
     result = vec4(sum * (1.0 / float(n * n)), 1.0);
   }
 #endif
-  if (inside) outputPixels[pixel.y * frame.width + pixel.x] = result;
+  if (inside) outputPixels[outputIndex] = result;
 }

@@ -289,6 +289,30 @@ TEST_F(RenderTest, DefaultSceneHasShadowOnPlane) {
   EXPECT_EQ(wrong, 0);
 }
 
+// An image over the device's storage-buffer range is rendered in bands of rows (headless.cpp):
+// bands of 7 rows, the last one shorter, give the whole image's floats bit for bit, with 2 x 2
+// samples so that sub-pixel positions cross the band edges too.
+TEST_F(RenderTest, BandsRenderTheWholeImage) {
+  Scene scene = parseSceneFile(kCourseScene);
+  const uint32_t w = 64, h = 50, rows = 7;
+  std::vector<float> whole = render(scene, w, h, OUTPUT_SHADED, 2);
+  ASSERT_EQ(bandCount(*renderer_), 1u);
+  renderer_->bandRows = rows;  // as the output buffer held only 7 rows (it holds all 50)
+  EXPECT_EQ(bandCount(*renderer_), 8u);
+  std::vector<float> banded(whole.size(), -1.0f);
+  for (uint32_t first = 0; first < h; first += rows) {
+    selectBand(*renderer_, first);
+    renderFrame(*renderer_);
+    readbackFrame(*renderer_);
+    const float* band = framePixels(*renderer_);
+    std::copy(band, band + size_t(w) * bandHeight(*renderer_) * 4, banded.begin() + ptrdiff_t(size_t(first) * w * 4));
+  }
+  EXPECT_EQ(bandHeight(*renderer_), h % rows);
+  EXPECT_EQ(banded, whole);
+  renderer_->bandRows = h;
+  selectBand(*renderer_, 0);
+}
+
 // The suite's zero-error check covers synchronization too: two writes to one buffer with no
 // barrier between them are a write-after-write hazard, which the layer must report.
 TEST_F(RenderTest, SynchronizationValidationReportsAHazard) {
