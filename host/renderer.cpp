@@ -64,13 +64,14 @@ uint32_t rowsPerBuffer(const Renderer& r, uint32_t width) {
                                          UINT32_MAX));
 }
 
-// Refuses, before allocating anything, an output the device cannot hold. The kernel's output
-// is a storage buffer of a vec4 per pixel within maxStorageBufferRange: over it, an image is
-// rendered in bands of rows, but progressive rendering (the running sums, the viewer) needs it
-// whole. All of it must fit the heap of host-visible memory.
-void checkOutputFits(const Renderer& r, uint32_t width, uint32_t height) {
-  const uint32_t rows = std::min(height, rowsPerBuffer(r, width));
-  const VkDeviceSize buffer = VkDeviceSize(width) * (r.accumulate ? height : std::max(rows, 1u)) * 16;
+// The rows the output buffer holds (the band height), refusing before anything is allocated an
+// output the device cannot hold. The kernel's output is a storage buffer of a vec4 per pixel
+// within maxStorageBufferRange: over it, an image is rendered in bands of rows, but progressive
+// rendering (the running sums, the viewer) needs it whole. All of it must fit the heap of
+// host-visible memory.
+uint32_t outputRows(const Renderer& r, uint32_t width, uint32_t height) {
+  const uint32_t rows = r.accumulate ? height : std::min(height, rowsPerBuffer(r, width));
+  const VkDeviceSize buffer = VkDeviceSize(width) * std::max(rows, 1u) * 16;
   const VkDeviceSize total = r.accumulate ? 2 * buffer + VkDeviceSize(width) * height * 4 : buffer;
   const std::string size = std::to_string(width) + "x" + std::to_string(height);
   const VkDeviceSize range = r.device.properties.limits.maxStorageBufferRange;
@@ -87,10 +88,11 @@ void checkOutputFits(const Renderer& r, uint32_t width, uint32_t height) {
   if (total > heap)
     throw VulkanError(size + " needs " + mebibytes(total) + " of device memory; this device's host-visible heap holds " +
                       mebibytes(heap) + ": render a smaller image");
+  return rows;
 }
 
 void createOutput(Renderer& r, uint32_t width, uint32_t height) {
-  checkOutputFits(r, width, height);
+  const uint32_t rows = outputRows(r, width, height);
   destroyBuffer(r.device, r.pixels);
   destroyBuffer(r.device, r.accumulation);
   destroyImage(r.device, r.display);
@@ -101,7 +103,7 @@ void createOutput(Renderer& r, uint32_t width, uint32_t height) {
   // A storage buffer in host-visible memory, not an image: the host reads it in place, and
   // lavapipe stores one vec4 per lane instead of one image channel per lane (the default
   // scene's kernel: 386 -> 374 x86 instructions per pixel, bench/instructions.sh).
-  r.bandRows = r.accumulate ? height : std::min(height, rowsPerBuffer(r, width));
+  r.bandRows = rows;
   r.pixels = createBuffer(r.device, VkDeviceSize(width) * r.bandRows * 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
   VkCommandBuffer cmd = beginCommands(r.device);
   imageBarrier(cmd, r.display.image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL, 0, VK_ACCESS_SHADER_WRITE_BIT,
