@@ -261,13 +261,14 @@ BakedScene bakeScene(const GpuScene& g) {
       g.planes.size() > MAX_BAKED_PLANES || g.lights.size() > MAX_BAKED_LIGHTS || g.materials.empty() ||
       g.materials.size() > MAX_BAKED_MATERIALS)
     return baked;
-  auto put = [&](uint32_t word, const auto& items) {
-    std::memcpy(baked.words.data() + word, items.data(), items.size() * sizeof(items[0]));
+  auto put = [&](uint32_t word, uint32_t stride, const auto& items) {
+    for (size_t k = 0; k < items.size(); ++k)
+      std::memcpy(baked.words.data() + word + k * stride, &items[k], sizeof(items[k]));
   };
-  put(BAKED_SPHERE_WORD, g.spheres);
-  put(BAKED_PLANE_WORD, g.planes);
-  put(BAKED_LIGHT_WORD, g.lights);
-  put(BAKED_MATERIAL_WORD, g.materials);
+  put(BAKED_SPHERE_WORD, BAKED_SPHERE_STRIDE, g.spheres);
+  put(BAKED_PLANE_WORD, BAKED_PLANE_STRIDE, g.planes);
+  put(BAKED_LIGHT_WORD, BAKED_LIGHT_STRIDE, g.lights);
+  put(BAKED_MATERIAL_WORD, BAKED_MATERIAL_STRIDE, g.materials);
   baked.enabled = 1;
   baked.materialCount = uint32_t(g.materials.size());
   return baked;

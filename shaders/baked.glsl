@@ -1,18 +1,21 @@
 // The scene built into the kernel (SPEC_BAKED): its spheres, planes, lights and materials as
-// specialisation constants, laid out word for word as in their uniform blocks (BAKED_*_WORD).
-// A kernel specialised to a scene's values, not only its counts, folds them into its code:
-// the default scene's kernel went from 286 to 189 x86 instructions per pixel
-// (bench/instructions.sh), and its material is picked with selects among constants instead of
-// gathered per lane. Included by trace.comp.glsl after common.h.
+// specialisation constants, each item laid out word for word as its uniform block's struct
+// (common.h, BAKED_*_WORD and BAKED_*_STRIDE). A kernel specialised to a scene's values, not
+// only its counts, folds them into its code: the default scene's kernel went from 286 to 189
+// x86 instructions per pixel (bench/instructions.sh), and its material is picked with selects
+// among constants instead of gathered per lane. Included by trace.comp.glsl after common.h.
+//
+// The items are built from the constants by name, not read from an array: an array initialised
+// from them (uint[](...), 390 words) tripled lavapipe's pipeline creation in every variant,
+// baked or not. Million x86 instructions in vkCreateComputePipelines (callgrind of
+// raytex_bench_frames scenes/textures.cfg 320 240 0 1 baked|unbaked): 283 before any baking,
+// 896 and 851 with the array, 320 and 316 by name.
 
 // Word 10 t + d is constant_id SPEC_BAKED_WORDS + 10 t + d, named bakedWord<t>_<d>.
 #define BAKED_WORD(t, d) layout(constant_id = SPEC_BAKED_WORDS + 10 * t + d) const uint bakedWord##t##_##d = 0u;
 #define BAKED_WORDS_10(t)                                                                 \
   BAKED_WORD(t, 0) BAKED_WORD(t, 1) BAKED_WORD(t, 2) BAKED_WORD(t, 3) BAKED_WORD(t, 4)    \
   BAKED_WORD(t, 5) BAKED_WORD(t, 6) BAKED_WORD(t, 7) BAKED_WORD(t, 8) BAKED_WORD(t, 9)
-#define BAKED_LIST_10(t)                                                                  \
-  bakedWord##t##_0, bakedWord##t##_1, bakedWord##t##_2, bakedWord##t##_3, bakedWord##t##_4, \
-  bakedWord##t##_5, bakedWord##t##_6, bakedWord##t##_7, bakedWord##t##_8, bakedWord##t##_9
 
 BAKED_WORDS_10(0)
 BAKED_WORDS_10(1)
@@ -53,72 +56,50 @@ BAKED_WORDS_10(35)
 BAKED_WORDS_10(36)
 BAKED_WORDS_10(37)
 BAKED_WORDS_10(38)
+BAKED_WORDS_10(39)
+BAKED_WORDS_10(40)
+BAKED_WORDS_10(41)
+BAKED_WORDS_10(42)
+BAKED_WORDS_10(43)
 
-// (Not const: GLSL allows no const array initialised from specialisation constants. After
-// specialisation the driver sees constants stored to a private array and read at constant
-// indices, and folds them.)
-uint bakedWords[BAKED_WORD_COUNT] = uint[BAKED_WORD_COUNT](
-    BAKED_LIST_10(0),
-    BAKED_LIST_10(1),
-    BAKED_LIST_10(2),
-    BAKED_LIST_10(3),
-    BAKED_LIST_10(4),
-    BAKED_LIST_10(5),
-    BAKED_LIST_10(6),
-    BAKED_LIST_10(7),
-    BAKED_LIST_10(8),
-    BAKED_LIST_10(9),
-    BAKED_LIST_10(10),
-    BAKED_LIST_10(11),
-    BAKED_LIST_10(12),
-    BAKED_LIST_10(13),
-    BAKED_LIST_10(14),
-    BAKED_LIST_10(15),
-    BAKED_LIST_10(16),
-    BAKED_LIST_10(17),
-    BAKED_LIST_10(18),
-    BAKED_LIST_10(19),
-    BAKED_LIST_10(20),
-    BAKED_LIST_10(21),
-    BAKED_LIST_10(22),
-    BAKED_LIST_10(23),
-    BAKED_LIST_10(24),
-    BAKED_LIST_10(25),
-    BAKED_LIST_10(26),
-    BAKED_LIST_10(27),
-    BAKED_LIST_10(28),
-    BAKED_LIST_10(29),
-    BAKED_LIST_10(30),
-    BAKED_LIST_10(31),
-    BAKED_LIST_10(32),
-    BAKED_LIST_10(33),
-    BAKED_LIST_10(34),
-    BAKED_LIST_10(35),
-    BAKED_LIST_10(36),
-    BAKED_LIST_10(37),
-    BAKED_LIST_10(38));
+// Words d..d+3 of ten t as a vec4.
+#define BAKED_VEC4(t, d0, d1, d2, d3)                                                                      \
+  vec4(uintBitsToFloat(bakedWord##t##_##d0), uintBitsToFloat(bakedWord##t##_##d1),                      \
+       uintBitsToFloat(bakedWord##t##_##d2), uintBitsToFloat(bakedWord##t##_##d3))
 
-float bakedFloat(uint i) { return uintBitsToFloat(bakedWords[i]); }
-vec4 bakedVec4(uint i) {
-  return vec4(bakedFloat(i), bakedFloat(i + 1u), bakedFloat(i + 2u), bakedFloat(i + 3u));
-}
+// The items, by the tens their words start at (BAKED_*_WORD / 10 + k * BAKED_*_STRIDE / 10).
+// Sphere: centerRadius, material. Plane: normalDistance, tangentScale, binormal, uvOffset,
+// solidOffset, material. Light: position, color. Material: ambient, diffuse, specular, color1,
+// color2, params, textureKind, octaves, imageLayer.
+#define BAKED_SPHERE(t) Sphere(BAKED_VEC4(t, 0, 1, 2, 3), bakedWord##t##_4, 0u, 0u, 0u)
+#define BAKED_PLANE(t, u, v)                                                                               \
+  Plane(BAKED_VEC4(t, 0, 1, 2, 3), BAKED_VEC4(t, 4, 5, 6, 7),                                              \
+        vec4(uintBitsToFloat(bakedWord##t##_8), uintBitsToFloat(bakedWord##t##_9),                         \
+             uintBitsToFloat(bakedWord##u##_0), uintBitsToFloat(bakedWord##u##_1)),                        \
+        BAKED_VEC4(u, 2, 3, 4, 5), BAKED_VEC4(u, 6, 7, 8, 9), bakedWord##v##_0, 0u, 0u, 0u)
+#define BAKED_LIGHT(t) Light(BAKED_VEC4(t, 0, 1, 2, 3), BAKED_VEC4(t, 4, 5, 6, 7))
+#define BAKED_MATERIAL(t, u, v)                                                                            \
+  Material(BAKED_VEC4(t, 0, 1, 2, 3), BAKED_VEC4(t, 4, 5, 6, 7),                                           \
+           vec4(uintBitsToFloat(bakedWord##t##_8), uintBitsToFloat(bakedWord##t##_9),                      \
+                uintBitsToFloat(bakedWord##u##_0), uintBitsToFloat(bakedWord##u##_1)),                     \
+           BAKED_VEC4(u, 2, 3, 4, 5), BAKED_VEC4(u, 6, 7, 8, 9), BAKED_VEC4(v, 0, 1, 2, 3),               \
+           bakedWord##v##_4, bakedWord##v##_5, bakedWord##v##_6, 0u)
 
-// Item k (a constant after unrolling; clamped so that the unbaked kernel's loops stay in range).
+// Slot k of each kind (k is a constant once the driver unrolls the caller's loop; slots past
+// MAX_BAKED_* give the last one).
 Sphere bakedSphere(uint k) {
-  uint w = BAKED_SPHERE_WORD + min(k, MAX_BAKED_SPHERES - 1u) * 8u;
-  return Sphere(bakedVec4(w), bakedWords[w + 4u], 0u, 0u, 0u);
+  return k == 0u ? BAKED_SPHERE(0) : k == 1u ? BAKED_SPHERE(1) : k == 2u ? BAKED_SPHERE(2) : BAKED_SPHERE(3);
 }
 Plane bakedPlane(uint k) {
-  uint w = BAKED_PLANE_WORD + min(k, MAX_BAKED_PLANES - 1u) * 24u;
-  return Plane(bakedVec4(w), bakedVec4(w + 4u), bakedVec4(w + 8u), bakedVec4(w + 12u), bakedVec4(w + 16u),
-               bakedWords[w + 20u], 0u, 0u, 0u);
+  return k == 0u ? BAKED_PLANE(4, 5, 6) : k == 1u ? BAKED_PLANE(7, 8, 9) : k == 2u ? BAKED_PLANE(10, 11, 12)
+                                                                                  : BAKED_PLANE(13, 14, 15);
 }
 Light bakedLight(uint k) {
-  uint w = BAKED_LIGHT_WORD + min(k, MAX_BAKED_LIGHTS - 1u) * 8u;
-  return Light(bakedVec4(w), bakedVec4(w + 4u));
+  return k == 0u ? BAKED_LIGHT(16) : k == 1u ? BAKED_LIGHT(17) : k == 2u ? BAKED_LIGHT(18) : BAKED_LIGHT(19);
 }
 Material bakedMaterial(uint k) {
-  uint w = BAKED_MATERIAL_WORD + min(k, MAX_BAKED_MATERIALS - 1u) * 28u;
-  return Material(bakedVec4(w), bakedVec4(w + 4u), bakedVec4(w + 8u), bakedVec4(w + 12u), bakedVec4(w + 16u),
-                  bakedVec4(w + 20u), bakedWords[w + 24u], bakedWords[w + 25u], bakedWords[w + 26u], 0u);
+  return k == 0u ? BAKED_MATERIAL(20, 21, 22) : k == 1u ? BAKED_MATERIAL(23, 24, 25)
+       : k == 2u ? BAKED_MATERIAL(26, 27, 28) : k == 3u ? BAKED_MATERIAL(29, 30, 31)
+       : k == 4u ? BAKED_MATERIAL(32, 33, 34) : k == 5u ? BAKED_MATERIAL(35, 36, 37)
+       : k == 6u ? BAKED_MATERIAL(38, 39, 40) : BAKED_MATERIAL(41, 42, 43);
 }

@@ -79,8 +79,13 @@ using uvec4 = glm::uvec4;
 
 // Scenes with at most these many of each get kernels with the values of their spheres, planes,
 // lights and materials built in (SPEC_BAKED, shaders/baked.glsl): headless renders, whose camera
-// (and so the camera-relative positions) is fixed. The words are laid out as the uniform
-// blocks' structs: BAKED_SPHERE_WORD + 8 k is sphere k, and so on.
+// (and so the camera-relative positions) is fixed. Item k of a kind is laid out as its uniform
+// block's struct from word BAKED_<KIND>_WORD + k * BAKED_<KIND>_STRIDE; strides are whole tens,
+// so that shaders/baked.glsl names an item's words by their tens.
+#define BAKED_SPHERE_STRIDE 10u       // words per item (sizeof(Sphere) / 4 = 8, padded)
+#define BAKED_PLANE_STRIDE 30u        // 24
+#define BAKED_LIGHT_STRIDE 10u        // 8
+#define BAKED_MATERIAL_STRIDE 30u     // 28
 #define SPEC_BAKED 8                  // 1: the kernel reads the BAKED_* words, not the uniform blocks
 #define SPEC_BAKED_MATERIAL_COUNT 9   // the scene's materials (at most MAX_BAKED_MATERIALS)
 #define SPEC_BAKED_WORDS 1000         // constant_id of word 0
@@ -88,11 +93,11 @@ using uvec4 = glm::uvec4;
 #define MAX_BAKED_PLANES 4u
 #define MAX_BAKED_LIGHTS 4u
 #define MAX_BAKED_MATERIALS 8u   // one per object: any scene within the object limits
-#define BAKED_SPHERE_WORD 0u          // 4 spheres of 8 words
-#define BAKED_PLANE_WORD 32u          // 4 planes of 24 words
-#define BAKED_LIGHT_WORD 128u         // 4 lights of 8 words
-#define BAKED_MATERIAL_WORD 160u      // 8 materials of 28 words
-#define BAKED_WORD_COUNT 390          // 384 used; baked.glsl declares them ten at a time
+#define BAKED_SPHERE_WORD 0u          // words 0-39: 4 spheres
+#define BAKED_PLANE_WORD 40u          // 40-159: 4 planes
+#define BAKED_LIGHT_WORD 160u         // 160-199: 4 lights
+#define BAKED_MATERIAL_WORD 200u      // 200-439: 8 materials
+#define BAKED_WORD_COUNT 440
 
 // Texture filtering: a build variant of the kernel (RAYTEX_FILTER_BOX), not a constant.
 #define FILTER_POINT 0  // point-sample textures at the hit (the course's method)
@@ -192,11 +197,13 @@ static_assert(sizeof(Plane) == 96, "Plane layout");
 static_assert(sizeof(Material) == 112, "Material layout");
 static_assert(sizeof(Light) == 32, "Light layout");
 static_assert(sizeof(NoiseTable) == NOISE_PERM_SIZE * 4, "NoiseTable layout");
-static_assert(BAKED_PLANE_WORD == BAKED_SPHERE_WORD + MAX_BAKED_SPHERES * sizeof(Sphere) / 4 &&
-                  BAKED_LIGHT_WORD == BAKED_PLANE_WORD + MAX_BAKED_PLANES * sizeof(Plane) / 4 &&
-                  BAKED_MATERIAL_WORD == BAKED_LIGHT_WORD + MAX_BAKED_LIGHTS * sizeof(Light) / 4 &&
-                  BAKED_MATERIAL_WORD + MAX_BAKED_MATERIALS * sizeof(Material) / 4 <= BAKED_WORD_COUNT,
-              "baked scene layout");
+static_assert(sizeof(Sphere) / 4 <= BAKED_SPHERE_STRIDE && sizeof(Plane) / 4 <= BAKED_PLANE_STRIDE &&
+                  sizeof(Light) / 4 <= BAKED_LIGHT_STRIDE && sizeof(Material) / 4 <= BAKED_MATERIAL_STRIDE &&
+                  BAKED_PLANE_WORD == BAKED_SPHERE_WORD + MAX_BAKED_SPHERES * BAKED_SPHERE_STRIDE &&
+                  BAKED_LIGHT_WORD == BAKED_PLANE_WORD + MAX_BAKED_PLANES * BAKED_PLANE_STRIDE &&
+                  BAKED_MATERIAL_WORD == BAKED_LIGHT_WORD + MAX_BAKED_LIGHTS * BAKED_LIGHT_STRIDE &&
+                  BAKED_WORD_COUNT == BAKED_MATERIAL_WORD + MAX_BAKED_MATERIALS * BAKED_MATERIAL_STRIDE,
+              "baked scene layout (shaders/baked.glsl names the words by these tens)");
 }  // namespace gpu
 #endif
 
