@@ -110,14 +110,17 @@ vec4 perlinNoiseGrad(vec3 p) {
   return vec4(value, grad);
 }
 
-// sum_{i < octaves} |noise(p 2^i)| / 2^i
+// sum_{i < octaves} |noise(p 2^i)| / 2^i. The octave loops are do-whiles: lavapipe runs a for
+// loop's body once more, masked off, for the test at its top (trace.comp.glsl, main).
 float turbulence(vec3 p, uint octaves) {
   float sum = 0.0, frequency = 1.0;
   uint n = min(octaves, NOISE_MAX_OCTAVES);
-  for (uint i = 0u; i < n; ++i) {
+  if (n == 0u) return 0.0;
+  uint i = 0u;
+  do {
     sum += abs(perlinNoise(p * frequency)) / frequency;
     frequency *= 2.0;
-  }
+  } while (++i < n);
   return sum;
 }
 
@@ -129,12 +132,14 @@ float dturbulence(vec3 p, uint octaves) {
   float sum = 0.0, frequency = 1.0;
   vec3 slope = vec3(0.0);
   uint n = min(octaves, NOISE_MAX_OCTAVES);
-  for (uint i = 0u; i < n; ++i) {
+  if (n == 0u) return 0.0;
+  uint i = 0u;
+  do {
     vec4 ng = perlinNoiseGrad(p * frequency);
     slope += ng.yzw;
     sum += abs(ng.x) / frequency / (1.0 + dot(slope, slope));
     frequency *= 2.0;
-  }
+  } while (++i < n);
   return sum;
 }
 

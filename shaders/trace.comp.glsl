@@ -238,10 +238,22 @@ void main() {
     }
     return;
   } else {
+    // No for loops here: lavapipe tests a loop's condition at the top of each pass and leaves
+    // only when no lane is left, so a for loop runs its body once more with every lane masked
+    // off, and nested ones more again: the whole trace three times at 1 sample. NIR unrolls
+    // them only while the body is small, so kernels with noise paid it (aDturbulence, 1 spp:
+    // 931 x86 instructions per pixel before, 456 after; bench/instructions.sh). One sample
+    // needs no loop; a do-while tests at the bottom.
     vec3 sum = vec3(0.0);
-    for (uint sy = 0u; sy < n; ++sy)
-      for (uint sx = 0u; sx < n; ++sx)
-        sum += radiance(origin, vec2(pixel) + (vec2(sx, sy) + 0.5) / float(n), 1.0 / float(n));
+    if (n == 1u) {
+      sum += radiance(origin, vec2(pixel) + 0.5, 1.0);
+    } else {
+      uint k = 0u;
+      do {
+        uvec2 cell = uvec2(k % n, k / n);
+        sum += radiance(origin, vec2(pixel) + (vec2(cell) + 0.5) / float(n), 1.0 / float(n));
+      } while (++k < n * n);
+    }
     result = vec4(sum * (1.0 / float(n * n)), 1.0);
   }
 #endif
