@@ -97,7 +97,8 @@ const std::array<uint32_t, 512>& noisePermutation() {
 
 void fillNoiseTable(gpu::NoiseTable* table) {
   const std::array<uint32_t, 512>& perm = noisePermutation();
-  for (int i = 0; i < NOISE_PERM_SIZE; ++i) table->perm[i >> 2][i & 3] = perm[i];
+  for (int i = 0; i < NOISE_PERM_SIZE; ++i)
+    table->pairs[i >> 2][i & 3] = perm[i] | perm[(i + 1) % NOISE_PERM_SIZE] << 16;
 }
 
 glm::dvec3 noiseGradientVector(uint32_t h) { return kGradients[h & 15u]; }

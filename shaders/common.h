@@ -186,8 +186,11 @@ struct Light {
   vec4 color;     // rgb
 };
 
+// Entry i holds perm[i] | perm[i + 1] << 16 (perm: the 256-entry permutation repeated, so
+// perm[512] = perm[0]): one load gives both corners along an axis, and Perlin's 14 table
+// lookups per noise value become 7. Lavapipe gathers them one lane at a time.
 struct NoiseTable {
-  uvec4 perm[NOISE_PERM_SIZE / 4];
+  uvec4 pairs[NOISE_PERM_SIZE / 4];
 };
 
 #ifdef __cplusplus

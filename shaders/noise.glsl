@@ -4,7 +4,8 @@
 //
 // Needs (declared by the including kernel):
 //   layout(std140, binding = BINDING_NOISE) uniform NoiseBlock { NoiseTable noiseTable; };
-// holding the 256-entry permutation repeated to 512 (host/noise.cpp, fillNoiseTable).
+// holding the 256-entry permutation repeated to 512, in neighbour pairs (common.h, NoiseTable;
+// host/noise.cpp, fillNoiseTable).
 //
 // - Lattice cell from floor(), reduced mod 256 in float before any int conversion
 //   (int() truncates toward 0 and breaks negative cells; accuracy.md F1). Period 256.
@@ -18,7 +19,8 @@
 // Octave counts above this are clamped (kNoiseMaxOctaves in host/noise.h).
 #define NOISE_MAX_OCTAVES 16u
 
-uint noisePerm(uint i) { return noiseTable.perm[i >> 2][i & 3u]; }
+// perm[i] in the low 16 bits, perm[i + 1] in the high (i <= 510 here).
+uint noisePermPair(uint i) { return noiseTable.pairs[i >> 2][i & 3u]; }
 
 vec3 noiseFade(vec3 t) { return t * t * t * (t * (t * 6.0 - 15.0) + 10.0); }
 vec3 noiseFadeDerivative(vec3 t) { return 30.0 * t * t * (t - 1.0) * (t - 1.0); }
@@ -29,11 +31,16 @@ void noiseCell(vec3 p, out vec3 f, out uvec4 hLo, out uvec4 hHi) {
   vec3 cell = floor(p);
   f = p - cell;
   uvec3 c = uvec3(mod(cell, 256.0)) & 255u;  // integer-valued floats: exact
-  uint a = noisePerm(c.x) + c.y, b = noisePerm(c.x + 1u) + c.y;
-  uint aa = noisePerm(a) + c.z, ab = noisePerm(a + 1u) + c.z;
-  uint ba = noisePerm(b) + c.z, bb = noisePerm(b + 1u) + c.z;
-  hLo = uvec4(noisePerm(aa), noisePerm(ba), noisePerm(ab), noisePerm(bb));
-  hHi = uvec4(noisePerm(aa + 1u), noisePerm(ba + 1u), noisePerm(ab + 1u), noisePerm(bb + 1u));
+  // Perlin's hashes, perm[perm[perm[x] + y] + z] for the 8 corners, from pairs: (perm[k],
+  // perm[k + 1]) in one load. Indices stay below 511 (255 + 255 at most).
+  uint px = noisePermPair(c.x);
+  uint a = (px & 0xFFFFu) + c.y, b = (px >> 16) + c.y;
+  uint pa = noisePermPair(a), pb = noisePermPair(b);
+  uvec4 corners = uvec4(pa & 0xFFFFu, pb & 0xFFFFu, pa >> 16, pb >> 16) + c.z;  // aa, ba, ab, bb
+  uvec4 h = uvec4(noisePermPair(corners.x), noisePermPair(corners.y), noisePermPair(corners.z),
+                  noisePermPair(corners.w));
+  hLo = h & 0xFFFFu;  // perm[aa], perm[ba], perm[ab], perm[bb]
+  hHi = h >> 16;      // perm[aa + 1], ... : the z + 1 corners
 }
 
 // The gradient hash h & 15 selects: the 12 cube-edge midpoints, then (1,1,0), (0,-1,1),

@@ -43,7 +43,7 @@ TEST(GpuScene, CourseSceneUploadsOnlyTheMaterialsItUses) {
   EXPECT_NEAR(g.planes[0].solidOffset.y, 0.6f, 1e-6f);
   EXPECT_NEAR(g.planes[0].solidOffset.z, 2.4f, 1e-6f);
   // No noise kind in use: the permutation table is left empty.
-  EXPECT_EQ(g.noise.perm[1], glm::uvec4(0));
+  EXPECT_EQ(g.noise.pairs[1], glm::uvec4(0));
 }
 
 TEST(GpuScene, ShapeHasTheKindsPerShapeAndTheCountsUpToTheLimit) {
@@ -70,7 +70,7 @@ TEST(GpuScene, NoiseTableIsFilledWhenANoiseKindIsUsed) {
   GpuScene g = buildGpuScene(scene, 8, 8);
   EXPECT_EQ(g.shape.kinds(), 1u << TEX_MARBLE);
   uint32_t sum = 0;
-  for (int i = 0; i < 256; ++i) sum += g.noise.perm[i >> 2][i & 3];
+  for (int i = 0; i < 256; ++i) sum += g.noise.pairs[i >> 2][i & 3] & 0xFFFFu;
   EXPECT_EQ(sum, 255u * 256u / 2u);  // a permutation of 0..255
 }
 

@@ -47,11 +47,16 @@ TEST(NoisePermutation, IsDeterministic) {
   EXPECT_EQ(&noisePermutation(), &p);
 }
 
-TEST(NoisePermutation, FillNoiseTablePacksFourPerVector) {
+TEST(NoisePermutation, FillNoiseTablePacksNeighbourPairsFourPerVector) {
   gpu::NoiseTable table{};
   fillNoiseTable(&table);
   const std::array<uint32_t, 512>& p = noisePermutation();
-  for (int i = 0; i < NOISE_PERM_SIZE; ++i) EXPECT_EQ(table.perm[i >> 2][i & 3], p[i]) << i;
+  for (int i = 0; i < NOISE_PERM_SIZE; ++i) {
+    const uint32_t pair = table.pairs[i >> 2][i & 3];
+    EXPECT_EQ(pair & 0xFFFFu, p[i]) << i;
+    EXPECT_EQ(pair >> 16, p[(i + 1) % 512]) << i;  // the repeat: p[512] is p[0]
+  }
+  EXPECT_EQ(table.pairs[127][3] >> 16, p[0]);
 }
 
 TEST(NoiseValue, SameValueTwiceAndPinned) {
