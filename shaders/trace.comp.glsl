@@ -226,36 +226,34 @@ void main() {
   // running sum and the display pixel, not the float image: readbackFrame multiplies the sum
   // by the same weight on the host (one float multiply: the same bits).
   const uint n = SAMPLES_PER_SIDE;
-  vec4 result;
+  uint i = outputIndex;
+  vec3 sum = vec3(0.0);
+  if (PROGRESSIVE) sum = frame.sampleIndex == 0u ? vec3(0.0) : accumulation[i].rgb;
+  // No for loop: lavapipe tests a loop's condition at the top of each pass and leaves only
+  // when no lane is left, so a for loop runs its body once more with every lane masked off,
+  // and nested ones more again: the whole trace three times at 1 sample. NIR unrolls them
+  // only while the body is small, so kernels with noise paid it (aDturbulence, 1 spp: 931
+  // x86 instructions per pixel before, 456 after; bench/instructions.sh). One sample needs
+  // no loop; a do-while tests at the bottom. Two calls of radiance, not three: the driver
+  // inlines each before it drops the branches the constants rule out (a third call cost
+  // about 20 % more pipeline creation).
+  if (PROGRESSIVE || n == 1u) {
+    uint k = PROGRESSIVE ? frame.sampleIndex : 0u;
+    sum += radiance(origin, vec2(pixel) + (vec2(k % n, k / n) + 0.5) / float(n), 1.0 / float(n));
+  } else {
+    uint k = 0u;
+    do {
+      sum += radiance(origin, vec2(pixel) + (vec2(k % n, k / n) + 0.5) / float(n), 1.0 / float(n));
+    } while (++k < n * n);
+  }
   if (PROGRESSIVE) {
-    uint i = outputIndex;
-    uvec2 cell = uvec2(frame.sampleIndex % n, frame.sampleIndex / n);
-    vec3 sum = frame.sampleIndex == 0u ? vec3(0.0) : accumulation[i].rgb;
-    sum += radiance(origin, vec2(pixel) + (vec2(cell) + 0.5) / float(n), 1.0 / float(n));
     if (inside) {
       accumulation[i] = vec4(sum, 1.0);
       imageStore(displayImage, ivec2(pixel), uvec4(displayPixel(sum * frame.sampleWeight)));
     }
     return;
-  } else {
-    // No for loops here: lavapipe tests a loop's condition at the top of each pass and leaves
-    // only when no lane is left, so a for loop runs its body once more with every lane masked
-    // off, and nested ones more again: the whole trace three times at 1 sample. NIR unrolls
-    // them only while the body is small, so kernels with noise paid it (aDturbulence, 1 spp:
-    // 931 x86 instructions per pixel before, 456 after; bench/instructions.sh). One sample
-    // needs no loop; a do-while tests at the bottom.
-    vec3 sum = vec3(0.0);
-    if (n == 1u) {
-      sum += radiance(origin, vec2(pixel) + 0.5, 1.0);
-    } else {
-      uint k = 0u;
-      do {
-        uvec2 cell = uvec2(k % n, k / n);
-        sum += radiance(origin, vec2(pixel) + (vec2(cell) + 0.5) / float(n), 1.0 / float(n));
-      } while (++k < n * n);
-    }
-    result = vec4(sum * (1.0 / float(n * n)), 1.0);
   }
+  vec4 result = vec4(sum * (1.0 / float(n * n)), 1.0);
 #endif
   if (inside) outputPixels[outputIndex] = result;
 }
