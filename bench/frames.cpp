@@ -3,8 +3,8 @@
 // instructions the kernel executes per frame. Unlike times, the count does not move with the
 // load of a shared machine, so kernel variants can be compared exactly.
 // The kernel is built around the scene's values as in raytex render (bakeScene), unless the
-// last argument is "unbaked".
-// Usage: raytex_bench_frames SCENE WIDTH HEIGHT FRAMES [SAMPLES_PER_SIDE [unbaked]]
+// sixth argument is "unbaked"; its textures are point-sampled unless the seventh is "box".
+// Usage: raytex_bench_frames SCENE WIDTH HEIGHT FRAMES [SAMPLES_PER_SIDE [baked|unbaked [point|box]]]
 #include "gpu_scene.h"
 #include "parser.h"
 #include "renderer.h"
@@ -15,19 +15,21 @@
 
 int main(int argc, char** argv) {
   if (argc < 5) {
-    fprintf(stderr, "usage: %s SCENE WIDTH HEIGHT FRAMES [SAMPLES_PER_SIDE [unbaked]]\n", argv[0]);
+    fprintf(stderr, "usage: %s SCENE WIDTH HEIGHT FRAMES [SAMPLES_PER_SIDE [baked|unbaked [point|box]]]\n",
+            argv[0]);
     return 2;
   }
   uint32_t width = uint32_t(atoi(argv[2])), height = uint32_t(atoi(argv[3]));
   int frames = atoi(argv[4]);
   uint32_t side = argc > 5 ? uint32_t(atoi(argv[5])) : 1;
   bool baked = !(argc > 6 && std::string(argv[6]) == "unbaked");
+  uint32_t filter = argc > 7 && std::string(argv[7]) == "box" ? FILTER_BOX : FILTER_POINT;
   Renderer r;
   try {
     GpuScene scene = buildGpuScene(parseSceneFile(argv[1]), width, height);
     createRenderer(r, {});
     uploadScene(r, scene);
-    preparePipeline(r, {scene.shape, OUTPUT_SHADED, FILTER_POINT, side, 0, baked ? bakeScene(scene) : BakedScene{}});
+    preparePipeline(r, {scene.shape, OUTPUT_SHADED, filter, side, 0, baked ? bakeScene(scene) : BakedScene{}});
     renderFrame(r);
     for (int i = 0; i < frames; ++i) renderFrame(r);
   } catch (const std::exception& e) {
