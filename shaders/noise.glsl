@@ -191,14 +191,15 @@ float octaveWeight(float cells, float c) {
 float filteredTurbulence(vec3 p, uint octaves, float cells, out float unresolved) {
   float sum = 0.0, lost = 0.0, frequency = 1.0, amplitude = 1.0;
   uint n = min(octaves, NOISE_MAX_OCTAVES);
-  for (uint i = 0u; i < n; ++i) {
+  uint i = 0u;
+  if (n > 0u) do {  // a do-while, as in turbulence
     float w = octaveWeight(cells * frequency, NOISE_ABS_WEIGHT_CELLS);
     if (w <= 0.0) break;
     sum += (NOISE_ABS_MEAN + w * (abs(perlinNoise(p * frequency)) - NOISE_ABS_MEAN)) * amplitude;
     lost += (1.0 - w * w) * amplitude * amplitude;
     frequency *= 2.0;
     amplitude *= 0.5;
-  }
+  } while (++i < n);
   // The dropped octaves j = i..n-1 (amplitude = 2^-i): sum 2^-j = 2 (2^-i - 2^-n) and
   // sum 4^-j = 4/3 (4^-i - 4^-n).
   float end = exp2(-float(n));
@@ -223,7 +224,8 @@ float filteredDturbulence(vec3 p, uint octaves, float cells) {
   float sum = 0.0, missing = 0.0, frequency = 1.0, amplitude = 1.0;
   vec3 slope = vec3(0.0);
   uint n = min(octaves, NOISE_MAX_OCTAVES);
-  for (uint i = 0u; i < n; ++i) {
+  uint i = 0u;
+  if (n > 0u) do {  // a do-while, as in turbulence
     float w = octaveWeight(cells * frequency, NOISE_ABS_WEIGHT_CELLS);
     float value = NOISE_ABS_MEAN;
     if (w > 0.0) {
@@ -235,7 +237,7 @@ float filteredDturbulence(vec3 p, uint octaves, float cells) {
     sum += value * amplitude / (1.0 + dot(slope, slope) + dturbulenceDamping(missing));
     frequency *= 2.0;
     amplitude *= 0.5;
-  }
+  } while (++i < n);
   return sum;
 }
 #endif  // RAYTEX_FILTER_BOX
