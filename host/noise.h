@@ -32,7 +32,7 @@ constexpr uint64_t kNoiseSeed = 0x7261797465782d31ull;  // "raytex-1"
 const std::array<uint32_t, 512>& noisePermutation();
 
 // Packs noisePermutation() for the BINDING_NOISE uniform buffer, two neighbours a word:
-// table->pairs[i >> 2][i & 3] = perm[i] | perm[(i + 1) & 511] << 16.
+// table->pairs[i >> 2][i & 3] = perm[i] | perm[(i + 1) % 512] << 16.
 void fillNoiseTable(gpu::NoiseTable* table);
 
 // The gradient the hash h selects (only the low 4 bits are used).

@@ -226,9 +226,8 @@ void main() {
   // running sum and the display pixel, not the float image: readbackFrame multiplies the sum
   // by the same weight on the host (one float multiply: the same bits).
   const uint n = SAMPLES_PER_SIDE;
-  uint i = outputIndex;
   vec3 sum = vec3(0.0);
-  if (PROGRESSIVE) sum = frame.sampleIndex == 0u ? vec3(0.0) : accumulation[i].rgb;
+  if (PROGRESSIVE) sum = frame.sampleIndex == 0u ? vec3(0.0) : accumulation[outputIndex].rgb;
   // No for loop: lavapipe tests a loop's condition at the top of each pass and leaves only
   // when no lane is left, so a for loop runs its body once more with every lane masked off,
   // and nested ones more again: the whole trace three times at 1 sample. NIR unrolls them
@@ -248,7 +247,7 @@ void main() {
   }
   if (PROGRESSIVE) {
     if (inside) {
-      accumulation[i] = vec4(sum, 1.0);
+      accumulation[outputIndex] = vec4(sum, 1.0);
       imageStore(displayImage, ivec2(pixel), uvec4(displayPixel(sum * frame.sampleWeight)));
     }
     return;
