@@ -3,34 +3,11 @@
 #include "headless.h"
 #include "median.h"
 #include "parser.h"
-#include "reference.h"
-
-#include <glm/geometric.hpp>
+#include "ray_count.h"
 
 #include <cstdio>
 #include <string>
 #include <vector>
-
-RayCount countRays(const Scene& scene, uint32_t width, uint32_t height, uint32_t samplesPerPixel) {
-  RayCount count;
-  count.primary = uint64_t(width) * height * samplesPerPixel;
-  const glm::dvec3 eye = scene.camera.eye;
-  uint64_t shadow = 0;
-  for (uint32_t y = 0; y < height; ++y) {
-    for (uint32_t x = 0; x < width; ++x) {
-      glm::dvec3 dir = referenceRayDirection(scene.camera, int(width), int(height), int(x), int(y));
-      ReferenceHit hit = referenceClosestHit(scene, eye, dir);
-      if (hit.kind == 0) continue;
-      glm::dvec3 n = glm::dot(hit.n, dir) > 0.0 ? -hit.n : hit.n;  // facing the viewer
-      for (const Light& light : scene.lights) {
-        glm::dvec3 toLight = light.position - hit.p;
-        if (glm::dot(toLight, toLight) > 0.0 && glm::dot(n, toLight) > 0.0) ++shadow;
-      }
-    }
-  }
-  count.shadow = shadow * samplesPerPixel;
-  return count;
-}
 
 namespace {
 
@@ -79,7 +56,7 @@ int runBench(const RenderOptions& options, const BenchOptions& bench) {
             med(&PhaseTimes::readback), med(&PhaseTimes::encode),        median(ends)};
 
   const RenderJob& job = last.job;
-  RayCount rays = countRays(parseSceneFile(options.scene), job.width, job.height, job.samplesPerPixel);
+  RayCount rays = countRays(parseSceneFile(options.scene), job.width, job.height, job.samplesPerSide);
   double frameSeconds = m.frame * 1e-3;
   double mpixels = frameSeconds > 0 ? double(job.width) * job.height / frameSeconds * 1e-6 : 0.0;
   double mrays = frameSeconds > 0 ? double(rays.primary + rays.shadow) / frameSeconds * 1e-6 : 0.0;

@@ -4,20 +4,31 @@
 
 #include <cmath>
 
-glm::dvec3 referenceRayDirection(const Camera& camera, int width, int height, int x, int y,
-                                 double dx, double dy) {
+ReferenceCamera referenceCamera(const Camera& camera, int width, int height) {
   const glm::dvec3 eye(camera.eye), lookat(camera.lookat), upHint(camera.up);
-  const glm::dvec3 w = glm::normalize(lookat - eye);
-  const glm::dvec3 u = glm::normalize(glm::cross(w, upHint));
-  const glm::dvec3 v = glm::cross(u, w);
-  const double halfHeight = std::tan(double(camera.fovY) * M_PI / 360.0);
-  const double halfWidth = halfHeight * double(width) / double(height);
-  const double sx = ((x + 0.5 + dx) / width) * 2.0 - 1.0;
-  const double sy = 1.0 - ((y + 0.5 + dy) / height) * 2.0;
-  return glm::normalize(w + sx * halfWidth * u + sy * halfHeight * v);
+  ReferenceCamera c;
+  c.forward = glm::normalize(lookat - eye);
+  c.right = glm::normalize(glm::cross(c.forward, upHint));
+  c.up = glm::cross(c.right, c.forward);
+  c.halfHeight = std::tan(double(camera.fovY) * M_PI / 360.0);
+  c.halfWidth = c.halfHeight * double(width) / double(height);
+  c.width = width;
+  c.height = height;
+  return c;
 }
 
-ReferenceHit referenceClosestHit(const Scene& scene, glm::dvec3 o, glm::dvec3 d) {
+glm::dvec3 referenceRayDirection(const ReferenceCamera& c, int x, int y, double dx, double dy) {
+  const double sx = ((x + 0.5 + dx) / c.width) * 2.0 - 1.0;
+  const double sy = 1.0 - ((y + 0.5 + dy) / c.height) * 2.0;
+  return glm::normalize(c.forward + sx * c.halfWidth * c.right + sy * c.halfHeight * c.up);
+}
+
+glm::dvec3 referenceRayDirection(const Camera& camera, int width, int height, int x, int y,
+                                 double dx, double dy) {
+  return referenceRayDirection(referenceCamera(camera, width, height), x, y, dx, dy);
+}
+
+ReferenceHit referenceClosestHit(const Scene& scene, glm::dvec3 o, glm::dvec3 d, bool withTexCoords) {
   ReferenceHit best;
   best.t = INFINITY;
   // Spheres: |o + t d - c|^2 = r^2 with |d| = 1, textbook roots in double.
@@ -43,7 +54,7 @@ ReferenceHit referenceClosestHit(const Scene& scene, glm::dvec3 o, glm::dvec3 d)
     best.t = t;
     best.n = glm::normalize(o + t * d - glm::dvec3(s.center));
     best.p = glm::dvec3(s.center) + r * best.n;
-    best.tc = sphereTexCoord(best.n);
+    if (withTexCoords) best.tc = sphereTexCoord(best.n);
     best.edgeMargin = margin;
   }
   for (size_t i = 0; i < scene.planes.size(); ++i) {
@@ -60,7 +71,7 @@ ReferenceHit referenceClosestHit(const Scene& scene, glm::dvec3 o, glm::dvec3 d)
     best.t = t;
     best.p = o + t * d;
     best.n = frame.normal;
-    best.tc = planeTexCoord(frame, double(pl.texScale), best.p);
+    if (withTexCoords) best.tc = planeTexCoord(frame, double(pl.texScale), best.p);
     best.edgeMargin = margin;  // a sphere passed nearby still makes this pixel an edge
   }
   if (best.kind == 0) best.t = 0.0;

@@ -19,9 +19,23 @@ struct ReferenceHit {
   double edgeMargin = 1e30;
 };
 
+// A pinhole camera for an image size: its unit basis and half extents, worked out once for
+// many rays.
+struct ReferenceCamera {
+  glm::dvec3 forward{0.0}, right{0.0}, up{0.0};
+  double halfWidth = 0.0, halfHeight = 0.0;
+  int width = 1, height = 1;
+};
+ReferenceCamera referenceCamera(const Camera& camera, int width, int height);
+
 // Unit direction of the primary ray through pixel (x, y)'s centre + (dx, dy) in [-0.5, 0.5]:
 // pinhole, vertical fov, aspect width/height, row 0 at the top.
+glm::dvec3 referenceRayDirection(const ReferenceCamera& camera, int x, int y, double dx = 0.0,
+                                 double dy = 0.0);
 glm::dvec3 referenceRayDirection(const Camera& camera, int width, int height, int x, int y,
                                  double dx = 0.0, double dy = 0.0);
 
-ReferenceHit referenceClosestHit(const Scene& scene, glm::dvec3 origin, glm::dvec3 direction);
+// The nearest hit along the ray. withTexCoords false leaves tc unset, for callers that need
+// only what was hit and where (ray counting): the mappings' trigonometry is most of the cost.
+ReferenceHit referenceClosestHit(const Scene& scene, glm::dvec3 origin, glm::dvec3 direction,
+                                 bool withTexCoords = true);
