@@ -12,17 +12,19 @@
 
 namespace {
 
-// A level camera 1 above the floor y = 0: the rays below the horizon, those through the
-// lower half of the image (an even height puts no sample on the horizon), hit the floor.
-std::string horizonScene(const std::string& lights) {
+// A level camera at height eyeY over the floor y = 0 (below it for eyeY < 0): the rays
+// towards the floor, those through the lower half of the image (the upper half from below;
+// an even height puts no sample on the horizon), hit it.
+std::string floorScene(int eyeY, const std::string& lights) {
+  const std::string y = std::to_string(eyeY);
   return "material m { diffuse = (0.5, 0.5, 0.5); }\n"
-         "camera { eye = (0, 1, 0); lookat = (0, 1, -1); up = (0, 1, 0); fov = 60; }\n" +
+         "camera { eye = (0, " + y + ", 0); lookat = (0, " + y + ", -1); up = (0, 1, 0); fov = 60; }\n" +
          lights + "plane { normal = (0, 1, 0); distance = 0; m; }\n";
 }
 
 TEST(RayCount, FloorBelowTheHorizonCastsOneShadowRayPerSampleAndLightAbove) {
-  Scene scene = parseSceneText(horizonScene("light { position = (3, 10, -4); color = (1, 1, 1); }\n"
-                                            "light { position = (-2, 4, 1); color = (1, 1, 1); }\n"),
+  Scene scene = parseSceneText(floorScene(1, "light { position = (3, 10, -4); color = (1, 1, 1); }\n"
+                                             "light { position = (-2, 4, 1); color = (1, 1, 1); }\n"),
                                "horizon.cfg");
   RayCount one = countRays(scene, 16, 10, 1);
   EXPECT_EQ(one.primary, 16u * 10u);
@@ -34,7 +36,7 @@ TEST(RayCount, FloorBelowTheHorizonCastsOneShadowRayPerSampleAndLightAbove) {
 }
 
 TEST(RayCount, LightBelowTheFloorCastsNone) {
-  Scene scene = parseSceneText(horizonScene("light { position = (0, -3, -5); color = (1, 1, 1); }\n"),
+  Scene scene = parseSceneText(floorScene(1, "light { position = (0, -3, -5); color = (1, 1, 1); }\n"),
                                "below.cfg");
   RayCount count = countRays(scene, 16, 10, 2);
   EXPECT_EQ(count.primary, 16u * 10u * 4u);
@@ -43,14 +45,10 @@ TEST(RayCount, LightBelowTheFloorCastsNone) {
 
 // Seen from below, the floor's normal turns to face the eye: a light below it is in front.
 TEST(RayCount, FloorSeenFromBelowIsLitFromBelow) {
-  Scene scene = parseSceneText(
-      "material m { diffuse = (0.5, 0.5, 0.5); }\n"
-      "camera { eye = (0, -1, 0); lookat = (0, -1, -1); up = (0, 1, 0); fov = 60; }\n"
-      "light { position = (1, -6, -2); color = (1, 1, 1); }\n"
-      "light { position = (-4, -2, 3); color = (1, 1, 1); }\n"
-      "light { position = (0, 5, -3); color = (1, 1, 1); }\n"
-      "plane { normal = (0, 1, 0); distance = 0; m; }\n",
-      "underside.cfg");
+  Scene scene = parseSceneText(floorScene(-1, "light { position = (1, -6, -2); color = (1, 1, 1); }\n"
+                                              "light { position = (-4, -2, 3); color = (1, 1, 1); }\n"
+                                              "light { position = (0, 5, -3); color = (1, 1, 1); }\n"),
+                               "underside.cfg");
   RayCount count = countRays(scene, 16, 10, 1);
   EXPECT_EQ(count.shadow, 2u * 16u * 5u);  // the upper five rows, the two lights below
 }
