@@ -5,6 +5,7 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <exception>
 #include <system_error>
 #include <thread>
 #include <vector>
@@ -45,18 +46,28 @@ RayCount countRays(const Scene& scene, uint32_t width, uint32_t height, uint32_t
   // Interleaved rows, so every thread gets a share of the objects.
   const uint32_t threads = std::min({std::max(std::thread::hardware_concurrency(), 1u), 16u, height});
   std::vector<uint64_t> shadow(threads, 0);
+  std::vector<std::exception_ptr> errors(threads);  // rethrown here: a throw in a thread would end the process
+  auto countShare = [&](uint32_t t) {
+    try {
+      shadow[t] = countShadowRays(scene, camera, n, t, threads);
+    } catch (...) {
+      errors[t] = std::current_exception();
+    }
+  };
   std::vector<std::thread> workers;
-  uint32_t started = 1;  // thread 0 is this one
+  uint32_t started = 1;  // share 0 is this thread's
   for (; started < threads; ++started) {
     try {
-      workers.emplace_back([&, started] { shadow[started] = countShadowRays(scene, camera, n, started, threads); });
+      workers.emplace_back(countShare, started);
     } catch (const std::system_error&) {
       break;  // no more threads: this one counts the rest
     }
   }
-  shadow[0] = countShadowRays(scene, camera, n, 0, threads);
-  for (uint32_t t = started; t < threads; ++t) shadow[t] = countShadowRays(scene, camera, n, t, threads);
+  countShare(0);
+  for (uint32_t t = started; t < threads; ++t) countShare(t);
   for (std::thread& worker : workers) worker.join();
+  for (const std::exception_ptr& error : errors)
+    if (error) std::rethrow_exception(error);
   for (uint64_t s : shadow) count.shadow += s;
   return count;
 }
