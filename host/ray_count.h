@@ -15,5 +15,6 @@ struct RayCount {
 // positions (the centres of a pixel's samplesPerSide^2 sub-cells), and one shadow ray per
 // primary hit and light in front of the surface, as shade() casts them (shading.glsl). Hits
 // are found in float64 (reference.h), so a sample grazing a silhouette may count otherwise
-// than in the float32 kernel. Rows are shared between the processor's threads.
+// than in the float32 kernel. Rows are shared between the processor's threads
+// (forEachRowInParallel).
 RayCount countRays(const Scene& scene, uint32_t width, uint32_t height, uint32_t samplesPerSide);

@@ -2,7 +2,13 @@
 
 #include <glm/geometric.hpp>
 
+#include <atomic>
 #include <cmath>
+#include <exception>
+#include <mutex>
+#include <system_error>
+#include <thread>
+#include <vector>
 
 ReferenceCamera referenceCamera(const Camera& camera, int width, int height) {
   const glm::dvec3 eye(camera.eye), lookat(camera.lookat), upHint(camera.up);
@@ -26,6 +32,35 @@ glm::dvec3 referenceRayDirection(const ReferenceCamera& c, int x, int y, double 
 glm::dvec3 referenceRayDirection(const Camera& camera, int width, int height, int x, int y,
                                  double dx, double dy) {
   return referenceRayDirection(referenceCamera(camera, width, height), x, y, dx, dy);
+}
+
+void forEachRowInParallel(int height, int threads, const std::function<void(int)>& rowFn) {
+  std::atomic<int> nextRow{0};
+  std::exception_ptr error;  // the first; a throw left in a thread would end the process
+  std::mutex errorMutex;
+  auto work = [&] {
+    for (int y = nextRow++; y < height; y = nextRow++) {
+      try {
+        rowFn(y);
+      } catch (...) {
+        std::lock_guard<std::mutex> lock(errorMutex);
+        if (!error) error = std::current_exception();
+        nextRow = height;  // no more rows
+      }
+    }
+  };
+  const int count = threads > 0 ? threads : int(std::max(1u, std::thread::hardware_concurrency()));
+  std::vector<std::thread> pool;
+  for (int i = 1; i < count && i < height; ++i) {
+    try {
+      pool.emplace_back(work);
+    } catch (const std::system_error&) {
+      break;  // no more threads: those started, and this one, do all the rows
+    }
+  }
+  work();
+  for (std::thread& t : pool) t.join();
+  if (error) std::rethrow_exception(error);
 }
 
 ReferenceHit referenceClosestHit(const Scene& scene, glm::dvec3 o, glm::dvec3 d, bool withTexCoords) {

@@ -7,6 +7,8 @@
 
 #include <glm/vec3.hpp>
 
+#include <functional>
+
 struct ReferenceHit {
   int kind = 0;    // 0 none, 1 plane, 2 sphere (HIT_* in common.h)
   int index = -1;  // into Scene::planes or Scene::spheres
@@ -34,6 +36,15 @@ glm::dvec3 referenceRayDirection(const ReferenceCamera& camera, int x, int y, do
                                  double dy = 0.0);
 glm::dvec3 referenceRayDirection(const Camera& camera, int width, int height, int x, int y,
                                  double dx = 0.0, double dy = 0.0);
+
+// Offset from the pixel centre of the centre of sub-cell s (0 .. n-1) of n per side, in
+// [-0.5, 0.5]: the kernel's stratified sample positions.
+inline double referenceSampleOffset(int s, int n) { return (s + 0.5) / n - 0.5; }
+
+// rowFn(y) for every y in [0, height), rows handed out one at a time to `threads` threads
+// (0: one per processor thread); this thread works too. An exception in a row is rethrown
+// here once all threads are done.
+void forEachRowInParallel(int height, int threads, const std::function<void(int)>& rowFn);
 
 // The nearest hit along the ray. withTexCoords false leaves tc unset, for callers that need
 // only what was hit and where (ray counting): the mappings' trigonometry is most of the cost.

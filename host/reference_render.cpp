@@ -6,9 +6,7 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
-#include <thread>
 
 namespace {
 
@@ -108,29 +106,20 @@ ReferenceImage renderReference(const Scene& scene, int width, int height, int sa
   out.rgb.assign(size_t(width) * height * 3, 0.0);
   const int n = std::max(samplesPerSide, 1);
   const glm::dvec3 eye(scene.camera.eye);
-
-  std::atomic<int> nextRow{0};
-  auto work = [&] {
-    for (int y = nextRow++; y < height; y = nextRow++) {
-      for (int x = 0; x < width; ++x) {
-        glm::dvec3 sum(0.0);
-        for (int sy = 0; sy < n; ++sy)
-          for (int sx = 0; sx < n; ++sx) {
-            // Offsets of the sub-pixel cell centres from the pixel centre, in [-0.5, 0.5].
-            double dx = (sx + 0.5) / n - 0.5, dy = (sy + 0.5) / n - 0.5;
-            sum += shadeReference(context, eye, referenceRayDirection(scene.camera, width, height, x, y, dx, dy));
-          }
-        sum /= double(n * n);
-        double* px = &out.rgb[(size_t(y) * width + x) * 3];
-        for (int c = 0; c < 3; ++c) px[c] = sum[c];
-      }
+  const ReferenceCamera camera = referenceCamera(scene.camera, width, height);
+  forEachRowInParallel(height, threads, [&](int y) {
+    for (int x = 0; x < width; ++x) {
+      glm::dvec3 sum(0.0);
+      for (int sy = 0; sy < n; ++sy)
+        for (int sx = 0; sx < n; ++sx)
+          sum += shadeReference(context, eye,
+                                referenceRayDirection(camera, x, y, referenceSampleOffset(sx, n),
+                                                      referenceSampleOffset(sy, n)));
+      sum /= double(n * n);
+      double* px = &out.rgb[(size_t(y) * width + x) * 3];
+      for (int c = 0; c < 3; ++c) px[c] = sum[c];
     }
-  };
-  int count = threads > 0 ? threads : int(std::max(1u, std::thread::hardware_concurrency()));
-  std::vector<std::thread> pool;
-  for (int i = 1; i < count; ++i) pool.emplace_back(work);
-  work();
-  for (std::thread& t : pool) t.join();
+  });
   for (double v : out.rgb) out.nonFinite += !std::isfinite(v);
   return out;
 }
