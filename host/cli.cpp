@@ -25,10 +25,13 @@ bool parseUint(const std::string& flag, const std::string& text, uint32_t lo, ui
 const char* usageText() {
   return "usage: raytex render SCENE [-o out.png] [--width W] [--height H] [--spp N]\n"
          "                    [--filter point|box] [--reference] [--device N] [--stats] [--validate]\n"
+         "                    [--max-image-mib N] [--allow-read DIR]...\n"
          "       raytex view SCENE [-o shot.png] [--width W] [--height H] [--spp N] [--filter point|box]\n"
-         "                  [--device N] [--frames N] [--stats] [--validate]\n"
+         "                  [--device N] [--frames N] [--stats] [--validate] [--max-image-mib N]\n"
+         "                  [--allow-read DIR]...\n"
          "       raytex bench SCENE [--width W] [--height H] [--spp N] [--filter point|box] [--runs N]\n"
-         "                   [--json] [-o out.png] [--device N] [--validate]\n"
+         "                   [--json] [-o out.png] [--device N] [--validate] [--max-image-mib N]\n"
+         "                   [--allow-read DIR]...\n"
          "       raytex devices\n"
          "       raytex --help | --version\n"
          "\n"
@@ -45,6 +48,10 @@ const char* usageText() {
          "                     else the CPU driver lavapipe)\n"
          "  --stats            print one line of phase times in milliseconds\n"
          "  --validate         enable Vulkan validation layers (also RAYTEX_VALIDATION=1)\n"
+         "  --max-image-mib N  refuse a scene whose image textures would upload more than N MiB\n"
+         "                     (default 512; also view and bench)\n"
+         "  --allow-read DIR   read #include files and images only inside DIR (repeatable; the scene\n"
+         "                     named here is always read; also view and bench): docs/security.md\n"
          "view     Show SCENE in a window, rendered by the same kernel one sample per frame and\n"
          "         accumulated while nothing changes, up to --spp samples (default: the scene's\n"
          "         render block, else 64). Keys:\n"
@@ -165,6 +172,15 @@ bool parseCli(const std::vector<std::string>& args, CliArgs* out, std::string* e
       return false;
     } else if (a == "--reference") {
       r.reference = true;
+    } else if (a == "--max-image-mib") {
+      if (!value(&v) || !parseUint(a, v, 1, 1048576, &r.maxImageMiB, error)) return false;
+    } else if (a == "--allow-read") {
+      if (!value(&v)) return false;
+      if (v.empty()) {
+        *error = a + " needs a directory";
+        return false;
+      }
+      r.allowRead.push_back(v);
     } else if (a == "--stats") {
       r.stats = true;
     } else if (a == "--validate") {

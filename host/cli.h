@@ -21,6 +21,8 @@ struct RenderOptions {
   bool stats = false;     // --stats: one line of phase times (view: frame times at exit)
   bool validate = false;  // --validate, or RAYTEX_VALIDATION=1: Vulkan validation layers
   uint32_t frames = 0;    // view --frames N: quit after N frames (accumulation restarting)
+  uint32_t maxImageMiB = 512;          // --max-image-mib N: budget of image texture bytes uploaded
+  std::vector<std::string> allowRead;  // --allow-read DIR (repeatable): includes and images only there
 };
 
 struct BenchOptions {
