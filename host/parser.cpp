@@ -22,6 +22,7 @@ using cfg::Tok;
 using cfg::Token;
 using cfg::describe;
 using cfg::isNonFiniteWord;
+using cfg::quote;
 
 namespace {
 
@@ -104,7 +105,7 @@ class Parser {
       else if (kw.text == "render") parseRender(kw);
       else if (kw.text == "background") topColor(kw, &st_.scene.background, &st_.backgroundLoc);
       else if (kw.text == "ambient_light") topColor(kw, &st_.scene.ambientLight, &st_.ambientLoc);
-      else fail(kw.loc, "unknown top-level keyword '" + kw.text + "'");
+      else fail(kw.loc, "unknown top-level keyword " + quote(kw.text));
     }
   }
 
@@ -138,19 +139,19 @@ class Parser {
 
   // After a key: '=' then a duplicate check.
   void assign(const Token& key, Seen& seen, const std::string& where) {
-    expect(Tok::Equals, "'=' after '" + key.text + "'");
+    expect(Tok::Equals, "'=' after " + quote(key.text));
     auto it = seen.find(key.text);
     if (it != seen.end())
-      fail(key.loc, "duplicate key '" + key.text + "' in " + where + " (first given at " + locString(it->second) + ")");
+      fail(key.loc, "duplicate key " + quote(key.text) + " in " + where + " (first given at " + locString(it->second) + ")");
     seen[key.text] = key.loc;
   }
 
   double number(FileLoc* loc = nullptr, std::string* text = nullptr) {
     const Token& t = peek();
-    if (t.kind == Tok::Ident && isNonFiniteWord(t.text)) fail(t.loc, "'" + t.text + "' is not a finite number");
+    if (t.kind == Tok::Ident && isNonFiniteWord(t.text)) fail(t.loc, quote(t.text) + " is not a finite number");
     if (t.kind != Tok::Number) fail(t.loc, "expected a number, got " + describe(t));
     if (loc) *loc = t.loc;
-    if (text) *text = t.text;
+    if (text) *text = cfg::clip(t.text);  // quoted in range messages
     return take().number;
   }
 
@@ -197,7 +198,7 @@ class Parser {
       if (t.kind == Tok::Include) fail(t.loc, "#include is only allowed at top level");
       if (t.kind != Tok::Ident) fail(t.loc, "expected a key or '}' in " + what + ", got " + describe(t));
       if (isBlockKeyword(t.text) && peek(1).kind != Tok::Equals && peek(1).kind != Tok::Semi)
-        fail(open.loc, "'{' of " + what + " is never closed (a '" + t.text + "' block starts at " +
+        fail(open.loc, "'{' of " + what + " is never closed (a " + quote(t.text) + " block starts at " +
                            std::to_string(t.loc.line) + ":" + std::to_string(t.loc.column) + ")");
       stmt(take());
     }
@@ -207,7 +208,7 @@ class Parser {
 
   int lookupMaterial(const Token& name) {
     auto it = st_.materialIndex.find(name.text);
-    if (it == st_.materialIndex.end()) fail(name.loc, "unknown material '" + name.text + "'");
+    if (it == st_.materialIndex.end()) fail(name.loc, "unknown material " + quote(name.text));
     return it->second;
   }
 
@@ -219,9 +220,9 @@ class Parser {
       semicolon("the material name");
       return;
     }
-    if (peek().kind == Tok::Equals) fail(key.loc, "unknown key '" + key.text + "' in " + where);
+    if (peek().kind == Tok::Equals) fail(key.loc, "unknown key " + quote(key.text) + " in " + where);
     *material = lookupMaterial(key);
-    semicolon("material name '" + key.text + "'");
+    semicolon("material name " + quote(key.text));
   }
 
   void parseSphere(const Token& kw) {
@@ -239,7 +240,7 @@ class Parser {
         materialStatement(key, &s.material, "sphere");
         return;
       }
-      semicolon("the value of '" + key.text + "'");
+      semicolon("the value of " + quote(key.text));
     });
     st_.scene.spheres.push_back(s);
   }
@@ -266,23 +267,23 @@ class Parser {
         materialStatement(key, &p.material, "plane");
         return;
       }
-      semicolon("the value of '" + key.text + "'");
+      semicolon("the value of " + quote(key.text));
     });
     st_.scene.planes.push_back(p);
   }
 
   void parseMaterial() {
     Token name = expect(Tok::Ident, "a material name after 'material'");
-    if (isReserved(name.text)) fail(name.loc, "'" + name.text + "' is a reserved word and cannot name a material");
+    if (isReserved(name.text)) fail(name.loc, quote(name.text) + " is a reserved word and cannot name a material");
     auto it = st_.materialIndex.find(name.text);
     if (it != st_.materialIndex.end())
-      fail(name.loc, "duplicate material '" + name.text + "' (first defined at " +
+      fail(name.loc, "duplicate material " + quote(name.text) + " (first defined at " +
                          locString(st_.scene.materials[size_t(it->second)].loc) + ")");
     Material m = defaultMaterial();
     m.name = name.text;
     m.loc = name.loc;
     Seen seen;
-    std::string where = "material '" + name.text + "'";
+    std::string where = "material " + quote(name.text);
     block(where, [&](const Token& key) {
       if (key.text == "ambient" || key.text == "diffuse" || key.text == "specular") {
         assign(key, seen, where);
@@ -300,9 +301,9 @@ class Parser {
         m.texture = parseTexture();
         return;
       } else {
-        fail(key.loc, "unknown key '" + key.text + "' in " + where);
+        fail(key.loc, "unknown key " + quote(key.text) + " in " + where);
       }
-      semicolon("the value of '" + key.text + "'");
+      semicolon("the value of " + quote(key.text));
     });
     st_.materialIndex[m.name] = int(st_.scene.materials.size());
     st_.scene.materials.push_back(m);
@@ -313,8 +314,8 @@ class Parser {
     Token kindTok = expect(Tok::Ident, "a texture kind after 'texture ='");
     TextureKind kind;
     if (!textureKindFromName(kindTok.text, &kind))
-      fail(kindTok.loc, "unknown texture kind '" + kindTok.text +
-                            "' (expected image, checker, solid_checker, noise, marble, wood, turbulence or dturbulence)");
+      fail(kindTok.loc, "unknown texture kind " + quote(kindTok.text) +
+                            " (expected image, checker, solid_checker, noise, marble, wood, turbulence or dturbulence)");
     TextureDesc t = defaultTexture(kind);
     t.loc = kindTok.loc;
     std::string where = std::string(textureKindName(kind)) + " texture";
@@ -327,7 +328,7 @@ class Parser {
         const std::string& k = key.text;
         bool known = k == "color1" || k == "color2" || k == "scale" || k == "strength" || k == "squares" ||
                      k == "octaves" || k == "file";
-        if (!known) fail(key.loc, "unknown key '" + k + "' in " + where);
+        if (!known) fail(key.loc, "unknown key " + quote(k) + " in " + where);
         if (!textureKeyApplies(kind, k))
           fail(key.loc, "'" + k + "' does not apply to " + textureKindName(kind) + " textures");
         assign(key, seen, where);
@@ -350,7 +351,7 @@ class Parser {
           t.loc = f.loc;
           hasFile = true;
         }
-        semicolon("the value of '" + k + "'");
+        semicolon("the value of " + quote(k));
       });
     }
     if (kind == TextureKind::Image && !hasFile) fail(kindTok.loc, "image texture needs 'file = \"path\";'");
@@ -378,7 +379,7 @@ class Parser {
         if (!(v > 0.0 && v < 180.0)) fail(loc, "fov must be between 0 and 180 degrees (exclusive), got " + text);
         c.fovY = v;
       }
-      semicolon("the value of '" + key.text + "'");
+      semicolon("the value of " + quote(key.text));
     });
     glm::dvec3 dir = glm::dvec3(c.lookat) - glm::dvec3(c.eye);
     if (!(glm::length(dir) > 0.0)) {
@@ -421,7 +422,7 @@ class Parser {
           r.samplesPerPixel = n;
         }
       }
-      semicolon("the value of '" + key.text + "'");
+      semicolon("the value of " + quote(key.text));
     });
   }
 
@@ -433,7 +434,7 @@ class Parser {
       assignKnown(key, seen, "light", {"position", "color"});
       if (key.text == "position") l.position = tuple();
       else l.color = color();
-      semicolon("the value of '" + key.text + "'");
+      semicolon("the value of " + quote(key.text));
     });
     st_.scene.lights.push_back(l);
   }
@@ -441,15 +442,15 @@ class Parser {
   void assignKnown(const Token& key, Seen& seen, const std::string& where, std::initializer_list<const char*> keys) {
     for (const char* k : keys)
       if (key.text == k) return assign(key, seen, where);
-    fail(key.loc, "unknown key '" + key.text + "' in " + where);
+    fail(key.loc, "unknown key " + quote(key.text) + " in " + where);
   }
 
   void topColor(const Token& kw, glm::vec3* out, FileLoc* given) {
     if (given->line > 0) fail(kw.loc, "duplicate " + kw.text + " (first given at " + locString(*given) + ")");
     *given = kw.loc;
-    expect(Tok::Equals, "'=' after '" + kw.text + "'");
+    expect(Tok::Equals, "'=' after " + quote(kw.text));
     *out = color();
-    semicolon("the value of '" + kw.text + "'");
+    semicolon("the value of " + quote(kw.text));
   }
 
   void parseInclude() {

@@ -50,11 +50,20 @@ bool isNonFiniteWord(const std::string& word) {
   return w == "nan" || w == "inf" || w == "infinity";
 }
 
+std::string clip(const std::string& s) {
+  if (s.size() <= kQuoteBytes) return s;
+  size_t cut = kQuoteBytes;
+  while (cut > 0 && (static_cast<unsigned char>(s[cut]) & 0xC0) == 0x80) --cut;  // inside a character
+  return s.substr(0, cut) + "...";
+}
+
+std::string quote(const std::string& s) { return "'" + clip(s) + "'"; }
+
 std::string describe(const Token& t) {
   switch (t.kind) {
     case Tok::End: return "end of file";
-    case Tok::String: return "'\"" + t.text + "\"'";
-    default: return "'" + t.text + "'";
+    case Tok::String: return "'\"" + clip(t.text) + "\"'";
+    default: return quote(t.text);
   }
 }
 
@@ -99,7 +108,7 @@ Token Tokenizer::next() {
     while (isIdentChar(at())) advance();
     if (src_.compare(word, pos_ - word, "include") != 0)
       throw SceneError(t.loc, pos_ == word ? "unexpected character '#'"
-                               : "unknown directive '#" + src_.substr(word, pos_ - word) + "'");
+                               : "unknown directive " + quote("#" + src_.substr(word, pos_ - word)));
     t.kind = Tok::Include;
     t.text = "#include";
   } else {
@@ -170,13 +179,13 @@ void Tokenizer::number(Token& t) {
   t.kind = Tok::Number;
   t.text = src_.substr(start, pos_ - start);
   std::string body = t.text.substr(sign ? 1 : 0);
-  if (isNonFiniteWord(body)) throw SceneError(t.loc, "'" + t.text + "' is not a finite number");
+  if (isNonFiniteWord(body)) throw SceneError(t.loc, quote(t.text) + " is not a finite number");
   if (!numeric) throw SceneError(t.loc, "unexpected character '" + t.text.substr(0, 1) + "'");
-  if (!isNumberSyntax(body)) throw SceneError(t.loc, "malformed number '" + t.text + "'");
+  if (!isNumberSyntax(body)) throw SceneError(t.loc, "malformed number " + quote(t.text));
   double v = 0.0;
   std::from_chars_result r = std::from_chars(body.data(), body.data() + body.size(), v);
   if (r.ec != std::errc() || r.ptr != body.data() + body.size() || !std::isfinite(v) || std::fabs(v) > FLT_MAX)
-    throw SceneError(t.loc, "number '" + t.text + "' is out of range");
+    throw SceneError(t.loc, "number " + quote(t.text) + " is out of range");
   t.number = src_[start] == '-' ? -v : v;
 }
 

@@ -21,7 +21,16 @@ struct Token {
 // "nan", "inf", "infinity" in any case: words that must not pass for numbers or names.
 bool isNonFiniteWord(const std::string& word);
 
-// How a token is named in messages: 'x', '"text"' or end of file.
+// Longest scene text a message quotes, in bytes: a message stays one short line whatever the input.
+constexpr size_t kQuoteBytes = 40;
+
+// s cut to kQuoteBytes at a UTF-8 character boundary, followed by "..." when cut.
+std::string clip(const std::string& s);
+
+// s clipped and in single quotes: how messages quote a word or value from a scene.
+std::string quote(const std::string& s);
+
+// How a token is named in messages: 'x', '"text"' (clipped) or end of file.
 std::string describe(const Token& t);
 
 class Tokenizer {

@@ -546,6 +546,43 @@ TEST(ParserErrors, ErrorsCarryTheirLocation) {
   }
 }
 
+// ---------------------------------------------------------------- quoting
+
+// Scene text quoted in a message is cut to 40 bytes, so a message never grows with the input.
+TEST(ParserQuoting, HugeTokensGiveShortMessages) {
+  const std::string huge(10 * 1024 * 1024, 'a');
+  const std::string cut = std::string(40, 'a') + "...";
+  EXPECT_EQ(errorOf("sphere { " + huge + " = 1; }"), "t.cfg:1:10: unknown key '" + cut + "' in sphere");
+  EXPECT_EQ(errorOf("sphere { " + huge + "; }"), "t.cfg:1:10: unknown material '" + cut + "'");
+  EXPECT_EQ(errorOf("sphere { } " + huge + " { }"), "t.cfg:1:12: unknown top-level keyword '" + cut + "'");
+  EXPECT_EQ(errorOf("material " + huge + " { x = 1; }"),
+            "t.cfg:1:" + std::to_string(13 + huge.size()) + ": unknown key 'x' in material '" + cut + "'");
+  EXPECT_EQ(errorOf("#" + huge), "t.cfg:1:1: unknown directive '#" + std::string(39, 'a') + "...'");
+  const std::string digits(10 * 1024 * 1024, '1');
+  EXPECT_EQ(errorOf("sphere { radius = " + digits + "x; }"),
+            "t.cfg:1:19: malformed number '" + std::string(40, '1') + "...'");
+  EXPECT_EQ(errorOf("sphere { radius = " + digits + "; }"),
+            "t.cfg:1:19: number '" + std::string(40, '1') + "...' is out of range");
+  EXPECT_EQ(errorOf("sphere { radius = -0." + digits + "; }"),
+            "t.cfg:1:19: sphere radius must be > 0, got -0." + std::string(37, '1') + "...");
+  EXPECT_EQ(errorOf("sphere { radius = \"" + huge + "\"; }"),
+            "t.cfg:1:19: expected a number, got '\"" + cut + "\"'");
+  EXPECT_LT(errorOf("sphere { " + huge + " = 1; }").size(), 300u);
+}
+
+TEST(ParserQuoting, CutAtAUtf8CharacterBoundary) {
+  // U+20AC EURO SIGN is 3 bytes: 13 of them fill 39 bytes, and the 14th would pass 40.
+  std::string euros;
+  for (int i = 0; i < 20; ++i) euros += "\xE2\x82\xAC";
+  std::string thirteen;
+  for (int i = 0; i < 13; ++i) thirteen += "\xE2\x82\xAC";
+  EXPECT_EQ(errorOf("sphere { radius = \"" + euros + "\"; }"),
+            "t.cfg:1:19: expected a number, got '\"" + thirteen + "...\"'");
+  // Exactly 40 bytes is not cut.
+  const std::string forty(40, 'b');
+  EXPECT_EQ(errorOf("sphere { " + forty + "; }"), "t.cfg:1:10: unknown material '" + forty + "'");
+}
+
 // ---------------------------------------------------------------- includes
 
 TEST_F(ParserFiles, IncludeResolvesRelativeToTheIncludingFile) {
