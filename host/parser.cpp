@@ -8,6 +8,7 @@
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <deque>
 #include <filesystem>
@@ -27,6 +28,7 @@ using cfg::quote;
 namespace {
 
 constexpr size_t kMaxIncludeDepth = 16;
+constexpr size_t kMaxPathBytes = 4096;  // Linux PATH_MAX
 
 [[noreturn]] void fail(const FileLoc& loc, const std::string& message) { throw SceneError(loc, message); }
 
@@ -55,6 +57,58 @@ struct State {
 };
 
 void parseText(State& st, const std::string& text, const std::string& file);
+
+const char* const kTopLevelKeywords[] = {"sphere", "plane",  "material",   "camera",
+                                         "light",  "render", "background", "ambient_light"};
+
+// Levenshtein distance of a and b, or 3 when it is more than 2 (the only question asked).
+size_t editDistanceUpTo2(const std::string& a, const std::string& b) {
+  if ((a.size() > b.size() ? a.size() - b.size() : b.size() - a.size()) > 2) return 3;
+  std::vector<size_t> row(b.size() + 1);
+  for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (size_t i = 1; i <= a.size(); ++i) {
+    size_t diagonal = row[0];
+    row[0] = i;
+    for (size_t j = 1; j <= b.size(); ++j) {
+      size_t above = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = above;
+    }
+  }
+  return std::min<size_t>(row[b.size()], 3);
+}
+
+// The top-level keyword within edit distance 2 of word (the closest), or nullptr.
+const char* nearKeyword(const std::string& word) {
+  const char* best = nullptr;
+  size_t bestDistance = 3;
+  for (const char* k : kTopLevelKeywords) {
+    size_t d = editDistanceUpTo2(word, k);
+    if (d < bestDistance) best = k, bestDistance = d;
+  }
+  return best;
+}
+
+// A file is a scene when it has no token at all, or its first token is #include, a top-level
+// keyword or a near miss of one. Anything else (a token file, a system file, binary data) is
+// refused without quoting any of it.
+bool isSceneText(const std::string& text, const std::string& file) {
+  try {
+    cfg::Tokenizer tokens(text, file);
+    Token first = tokens.next();
+    return first.kind == Tok::End || first.kind == Tok::Include ||
+           (first.kind == Tok::Ident && nearKeyword(first.text) != nullptr);
+  } catch (const SceneError&) {
+    return false;  // the first token does not lex
+  }
+}
+
+// A path named by the string token `name` (an #include or an image): bounded in length, so
+// that a message quoting it stays bounded.
+void checkReadable(const State&, const Token& name, const std::string& path) {
+  if (path.size() > kMaxPathBytes)
+    fail(name.loc, "file path is longer than " + std::to_string(kMaxPathBytes) + " bytes");
+}
 
 // Words that cannot name a material (they would read as keys or blocks).
 bool isReserved(const std::string& w) {
@@ -105,7 +159,7 @@ class Parser {
       else if (kw.text == "render") parseRender(kw);
       else if (kw.text == "background") topColor(kw, &st_.scene.background, &st_.backgroundLoc);
       else if (kw.text == "ambient_light") topColor(kw, &st_.scene.ambientLight, &st_.ambientLoc);
-      else fail(kw.loc, "unknown top-level keyword " + quote(kw.text));
+      else unknownKeyword(kw);
     }
   }
 
@@ -348,6 +402,7 @@ class Parser {
           Token f = expect(Tok::String, "a file name in quotes");
           if (f.text.empty()) fail(f.loc, "empty file name");
           t.imagePath = (fs::path(file_).parent_path() / f.text).lexically_normal().string();
+          checkReadable(st_, f, t.imagePath);
           t.loc = f.loc;
           hasFile = true;
         }
@@ -439,6 +494,12 @@ class Parser {
     st_.scene.lights.push_back(l);
   }
 
+  void unknownKeyword(const Token& kw) {
+    const char* near = nearKeyword(kw.text);
+    fail(kw.loc, "unknown top-level keyword " + quote(kw.text) +
+                     (near ? std::string(" (did you mean '") + near + "'?)" : std::string()));
+  }
+
   void assignKnown(const Token& key, Seen& seen, const std::string& where, std::initializer_list<const char*> keys) {
     for (const char* k : keys)
       if (key.text == k) return assign(key, seen, where);
@@ -458,6 +519,7 @@ class Parser {
     Token name = expect(Tok::String, "a file name in quotes after #include");
     if (name.text.empty()) fail(name.loc, "empty file name");
     std::string path = (fs::path(file_).parent_path() / name.text).string();
+    checkReadable(st_, name, path);
     if (st_.includeStack.size() > kMaxIncludeDepth)
       fail(directive.loc, "#include nested more than " + std::to_string(kMaxIncludeDepth) + " levels deep");
     std::string key = canonicalKey(path);
@@ -469,6 +531,7 @@ class Parser {
     }
     std::string text;
     if (!readTextFile(path, &text)) fail(directive.loc, "cannot open included file '" + path + "'");
+    if (!isSceneText(text, path)) fail(directive.loc, "'" + path + "' is not a scene file");
     st_.scene.files.push_back(path);
     parseText(st_, text, path);
   }
@@ -509,6 +572,8 @@ bool readTextFile(const std::string& path, std::string* out) {
 Scene parseSceneFile(const std::string& path) {
   std::string text;
   if (!readTextFile(path, &text)) throw SceneError(FileLoc{path, 0, 0}, "cannot open scene file '" + path + "'");
+  // The path may come from an untrusted caller too: a file that is not a scene is not quoted.
+  if (!isSceneText(text, path)) throw SceneError(FileLoc{path, 1, 1}, "'" + path + "' is not a scene file");
   Scene scene = parseSceneText(text, path);
   // A file with no object would render the background alone: an empty file, or a material
   // library given by mistake, not an image anyone wants.

@@ -11,6 +11,9 @@ bool readTextFile(const std::string& path, std::string* out);
 
 // Reads and parses a scene file; #include paths resolve relative to the including file. A
 // scene with no sphere or plane is an error (FILE:1:1): it would render the background alone.
+// A file is a scene when it is empty or comment-only, or its first token is #include, a
+// top-level keyword or within edit distance 2 of one; any other file, named here or included,
+// is refused as "not a scene file" with nothing of its content quoted.
 Scene parseSceneFile(const std::string& path);
 
 // Parses scene text as if it were the file `fileName` (used for error locations and

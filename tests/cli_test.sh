@@ -43,6 +43,18 @@ printf 'sphere {\n  center = (0, 0, 0);\n  radiuss = 2;\n}\n' >"$tmp/typo.cfg"
 expect scene-error 2 "^$tmp/typo.cfg:3:3: " -- "$raytex" render "$tmp/typo.cfg" -o "$tmp/typo.png"
 check scene-error-no-output test ! -e "$tmp/typo.png"
 
+# Messages never grow with the input nor quote a file that is not a scene (docs/security.md).
+{ printf 'sphere { '; head -c 10485760 /dev/zero | tr '\0' a; printf ' = 1; }\n'; } >"$tmp/huge-ident.cfg"
+"$raytex" render "$tmp/huge-ident.cfg" -o "$tmp/huge-ident.png" 2>"$tmp/huge-ident.err"
+check huge-identifier-exit-2 test $? -eq 2
+check huge-identifier-short-message test "$(wc -c <"$tmp/huge-ident.err")" -lt 300
+printf 'hunter2isMyPassword\n' >"$tmp/token.txt"
+printf '#include "token.txt"\nsphere { }\n' >"$tmp/inc-token.cfg"
+expect include-not-a-scene 2 "^$tmp/inc-token.cfg:1:1: '$tmp/token.txt' is not a scene file\$" -- \
+  "$raytex" render "$tmp/inc-token.cfg" -o "$tmp/x.png"
+expect scene-not-a-scene 2 "^$tmp/token.txt:1:1: '$tmp/token.txt' is not a scene file\$" -- \
+  "$raytex" render "$tmp/token.txt" -o "$tmp/x.png"
+
 expect no-driver 1 'mesa-vulkan-drivers' -- env VK_ICD_FILENAMES=/nonexistent.json "$raytex" render \
   "$src/scenes/textures.cfg" -o "$tmp/none.png"
 check no-driver-no-output test ! -e "$tmp/none.png"

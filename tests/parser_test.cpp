@@ -374,7 +374,10 @@ TEST(ParserErrors, UnknownKeys) {
 }
 
 TEST(ParserErrors, UnknownTopLevelKeyword) {
-  EXPECT_EQ(errorOf("\n  spher {\n}\n"), "t.cfg:2:3: unknown top-level keyword 'spher'");
+  EXPECT_EQ(errorOf("\n  spher {\n}\n"), "t.cfg:2:3: unknown top-level keyword 'spher' (did you mean 'sphere'?)");
+  EXPECT_EQ(errorOf("sphere { }\nambeint_light = (1, 1, 1);"),
+            "t.cfg:2:1: unknown top-level keyword 'ambeint_light' (did you mean 'ambient_light'?)");
+  EXPECT_EQ(errorOf("sphere { }\ncube { }"), "t.cfg:2:1: unknown top-level keyword 'cube'");
   EXPECT_EQ(errorOf("radius = 2;"), "t.cfg:1:1: unknown top-level keyword 'radius'");
   EXPECT_EQ(errorOf("sphere { } }"),
             "t.cfg:1:12: expected sphere, plane, material, camera, light, render, background, ambient_light or "
@@ -664,6 +667,57 @@ TEST_F(ParserFiles, AbsoluteIncludePath) {
   Scene s = parseSceneFile(main);
   EXPECT_EQ(s.materials.size(), 8u);
   EXPECT_EQ(s.materials[size_t(s.spheres[0].material)].name, "aWood");
+}
+
+// ---------------------------------------------------------------- files that are not scenes
+
+// An included file that is not a scene is refused at the #include, quoting none of its content.
+TEST_F(ParserFiles, IncludedFilesThatAreNotScenesAreNotQuoted) {
+  const std::string secret = "ghp_S3cr3tT0kenValue0123456789";
+  const std::pair<const char*, std::string> files[] = {
+      {"token.txt", secret + "\n"},
+      {"shadow", "root:$y$j9T$" + secret + ":19700:0:99999:7:::\n"},
+      {"maps", "55d0c0a00000-55d0c0a21000 r--p 00000000 08:01 1234567 /usr/bin/" + secret + "\n"},
+      {"binary", std::string("\x7f" "ELF\x02\x01\x01\0", 8) + secret},
+      {"string", "\"" + secret + "\"\n"},
+      {"directive", "#" + secret + "\n"},
+  };
+  for (const auto& [name, content] : files) {
+    write(name, content);
+    std::string main = write("main.cfg", "material m { }\n  #include \"" + std::string(name) + "\"\n");
+    std::string message = fileErrorOf(main);
+    EXPECT_EQ(message, main + ":2:3: '" + path(name) + "' is not a scene file");
+    EXPECT_EQ(message.find("S3cr3t"), std::string::npos) << message;
+  }
+}
+
+TEST_F(ParserFiles, ScenesAreKnownByTheirFirstToken) {
+  // Empty, comment-only, a near miss of a keyword, and #include all count as scenes.
+  write("empty.cfg", "");
+  write("comments.cfg", "// nothing\n/* at all */\n");
+  write("spher.cfg", "\n  spher { }\n");
+  write("inc.cfg", "#include \"empty.cfg\"\n");
+  EXPECT_EQ(parseSceneFile(write("a.cfg", "#include \"empty.cfg\"\n#include \"comments.cfg\"\n"
+                                          "#include \"inc.cfg\"\nsphere { }\n"))
+                .spheres.size(),
+            1u);
+  EXPECT_EQ(fileErrorOf(write("b.cfg", "#include \"spher.cfg\"\n")),
+            path("spher.cfg") + ":2:3: unknown top-level keyword 'spher' (did you mean 'sphere'?)");
+  // The scene named on the command line follows the same rule.
+  std::string token = write("token.cfg", "hunter2isMyPassword\n");
+  EXPECT_EQ(fileErrorOf(token), token + ":1:1: '" + token + "' is not a scene file");
+  std::string garbage = write("garbage.cfg", std::string("\xff\xfe\x00secret", 9));
+  EXPECT_EQ(fileErrorOf(garbage), garbage + ":1:1: '" + garbage + "' is not a scene file");
+  EXPECT_EQ(fileErrorOf(path("empty.cfg")), path("empty.cfg") + ":1:1: nothing to render: the scene has no sphere or plane");
+}
+
+// A path longer than PATH_MAX is refused where it is written, and the message does not quote it.
+TEST_F(ParserFiles, OverlongPathsAreRefusedWithoutQuotingThem) {
+  const std::string longName(5000, 'x');
+  std::string inc = write("inc.cfg", "#include \"" + longName + "\"\n");
+  EXPECT_EQ(fileErrorOf(inc), inc + ":1:10: file path is longer than 4096 bytes");
+  std::string img = write("img.cfg", "material m { texture = image { file = \"" + longName + ".png\"; } }\nsphere { m; }\n");
+  EXPECT_EQ(fileErrorOf(img), img + ":1:39: file path is longer than 4096 bytes");
 }
 
 // ---------------------------------------------------------------- robustness
