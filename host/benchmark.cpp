@@ -56,7 +56,8 @@ int runBench(const RenderOptions& options, const BenchOptions& bench) {
             med(&PhaseTimes::readback), med(&PhaseTimes::encode),        median(ends)};
 
   const RenderJob& job = last.job;
-  RayCount rays = countRays(parseSceneFile(options.scene), job.width, job.height, job.samplesPerSide);
+  RayCount rays =
+      countRays(parseSceneFile(options.scene, ReadPolicy{options.allowRead}), job.width, job.height, job.samplesPerSide);
   double frameSeconds = m.frame * 1e-3;
   double mpixels = frameSeconds > 0 ? double(job.width) * job.height / frameSeconds * 1e-6 : 0.0;
   double mrays = frameSeconds > 0 ? double(rays.primary + rays.shadow) / frameSeconds * 1e-6 : 0.0;

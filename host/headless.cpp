@@ -37,7 +37,7 @@ int renderHeadless(const RenderOptions& options, uint32_t extraFrames, HeadlessR
   // Parse and load images before touching Vulkan: bad input fails fast.
   GpuScene gpuScene;
   try {
-    Scene scene = parseSceneFile(options.scene);
+    Scene scene = parseSceneFile(options.scene, ReadPolicy{options.allowRead});
     std::string error;
     if (!resolveJob(options, scene.render, 1, &out->job, &error)) {
       fprintf(stderr, "raytex: %s\n", error.c_str());

@@ -54,7 +54,7 @@ int runRender(const RenderOptions& options) {
   Scene scene;
   RenderJob job;
   try {
-    scene = parseSceneFile(options.scene);
+    scene = parseSceneFile(options.scene, ReadPolicy{options.allowRead});
     std::string error;
     if (!resolveJob(options, scene.render, 1, &job, &error)) {
       fprintf(stderr, "raytex: %s\n", error.c_str());

@@ -3,6 +3,7 @@
 // Every error is a SceneError "file:line:col: message"; nothing else is thrown.
 #include "parser.h"
 
+#include "read_policy.h"
 #include "texture.h"
 #include "tokenizer.h"
 
@@ -28,7 +29,6 @@ using cfg::quote;
 namespace {
 
 constexpr size_t kMaxIncludeDepth = 16;
-constexpr size_t kMaxPathBytes = 4096;  // Linux PATH_MAX
 
 [[noreturn]] void fail(const FileLoc& loc, const std::string& message) { throw SceneError(loc, message); }
 
@@ -50,6 +50,7 @@ struct OpenFile {
 };
 
 struct State {
+  ReadPolicy policy;
   Scene scene;
   std::map<std::string, int> materialIndex;
   std::vector<OpenFile> includeStack;
@@ -103,11 +104,13 @@ bool isSceneText(const std::string& text, const std::string& file) {
   }
 }
 
-// A path named by the string token `name` (an #include or an image): bounded in length, so
-// that a message quoting it stays bounded.
-void checkReadable(const State&, const Token& name, const std::string& path) {
+// A path named by the string token `name` (an #include or an image): bounded in length, and
+// readable under the policy. Checked before the file is opened, so a refusal says nothing of
+// whether it exists.
+void checkReadable(const State& st, const Token& name, const std::string& path) {
   if (path.size() > kMaxPathBytes)
     fail(name.loc, "file path is longer than " + std::to_string(kMaxPathBytes) + " bytes");
+  if (!mayRead(st.policy, path)) fail(name.loc, "'" + path + "' is outside the directories --allow-read allows");
 }
 
 // Words that cannot name a material (they would read as keys or blocks).
@@ -551,8 +554,9 @@ void parseText(State& st, const std::string& text, const std::string& file) {
 
 }  // namespace
 
-Scene parseSceneText(const std::string& text, const std::string& fileName) {
+Scene parseSceneText(const std::string& text, const std::string& fileName, const ReadPolicy& policy) {
   State st;
+  st.policy = policy;
   st.scene.path = fileName;
   parseText(st, text, fileName);
   return std::move(st.scene);
@@ -569,12 +573,12 @@ bool readTextFile(const std::string& path, std::string* out) {
   return !in.bad();
 }
 
-Scene parseSceneFile(const std::string& path) {
+Scene parseSceneFile(const std::string& path, const ReadPolicy& policy) {
   std::string text;
   if (!readTextFile(path, &text)) throw SceneError(FileLoc{path, 0, 0}, "cannot open scene file '" + path + "'");
   // The path may come from an untrusted caller too: a file that is not a scene is not quoted.
   if (!isSceneText(text, path)) throw SceneError(FileLoc{path, 1, 1}, "'" + path + "' is not a scene file");
-  Scene scene = parseSceneText(text, path);
+  Scene scene = parseSceneText(text, path, policy);
   // A file with no object would render the background alone: an empty file, or a material
   // library given by mistake, not an image anyone wants.
   if (scene.spheres.empty() && scene.planes.empty())

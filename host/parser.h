@@ -2,6 +2,7 @@
 // Knows nothing of Vulkan. Every error is a SceneError "file:line:col: message".
 #pragma once
 
+#include "read_policy.h"
 #include "scene.h"
 
 #include <string>
@@ -13,9 +14,10 @@ bool readTextFile(const std::string& path, std::string* out);
 // scene with no sphere or plane is an error (FILE:1:1): it would render the background alone.
 // A file is a scene when it is empty or comment-only, or its first token is #include, a
 // top-level keyword or within edit distance 2 of one; any other file, named here or included,
-// is refused as "not a scene file" with nothing of its content quoted.
-Scene parseSceneFile(const std::string& path);
+// is refused as "not a scene file" with nothing of its content quoted. Includes and images
+// must satisfy `policy` (the file named here is always read).
+Scene parseSceneFile(const std::string& path, const ReadPolicy& policy = ReadPolicy{});
 
 // Parses scene text as if it were the file `fileName` (used for error locations and
 // to resolve #include and image paths relative to fileName's directory).
-Scene parseSceneText(const std::string& text, const std::string& fileName);
+Scene parseSceneText(const std::string& text, const std::string& fileName, const ReadPolicy& policy = ReadPolicy{});

@@ -168,13 +168,13 @@ std::vector<std::filesystem::file_time_type> fileTimes(const Scene& scene) {
 
 // Re-parses the scene when one of its files changed. A parse error is printed with its
 // file:line:col and the last good scene stays.
-void reloadIfChanged(ViewerState& state, const std::string& path,
+void reloadIfChanged(ViewerState& state, const std::string& path, const ReadPolicy& policy,
                      std::vector<std::filesystem::file_time_type>& times) {
   std::vector<std::filesystem::file_time_type> now = fileTimes(state.scene);
   if (now == times) return;
   times = now;
   try {
-    Scene scene = parseSceneFile(path);
+    Scene scene = parseSceneFile(path, policy);
     times = fileTimes(scene);
     state.scene = std::move(scene);
     state.orbit = orbitOf(state.scene.camera);
@@ -247,7 +247,7 @@ struct FrameStats {
 int runViewer(const RenderOptions& options) {
   ViewerState state;
   try {
-    state.scene = parseSceneFile(options.scene);
+    state.scene = parseSceneFile(options.scene, ReadPolicy{options.allowRead});
   } catch (const SceneError& e) {
     fprintf(stderr, "%s\n", e.what());
     return 2;
@@ -363,7 +363,7 @@ int runViewer(const RenderOptions& options) {
       if (options.frames && stats.frameMs.size() >= options.frames) break;
       auto now = Clock::now();
       if (now - lastTitle > std::chrono::milliseconds(250)) {  // also the reload poll
-        reloadIfChanged(state, options.scene, times);
+        reloadIfChanged(state, options.scene, ReadPolicy{options.allowRead}, times);
         double frameMs = stats.frameMs.empty() ? 0.0 : stats.frameMs.back();
         glfwSetWindowTitle(window.window, title(state, samples, target, frameMs, renderer.lastFrameMs).c_str());
         lastTitle = now;

@@ -55,6 +55,23 @@ expect include-not-a-scene 2 "^$tmp/inc-token.cfg:1:1: '$tmp/token.txt' is not a
 expect scene-not-a-scene 2 "^$tmp/token.txt:1:1: '$tmp/token.txt' is not a scene file\$" -- \
   "$raytex" render "$tmp/token.txt" -o "$tmp/x.png"
 
+# --allow-read: includes and images only inside the given trees (the scene itself always).
+mkdir -p "$tmp/jail" "$tmp/outside"
+printf 'material m { }\n' >"$tmp/outside/mats.cfg"
+printf 'camera { eye = (0, 0, 5); lookat = (0, 0, 0); }\n#include "../outside/mats.cfg"\nsphere { m; }\n' \
+  >"$tmp/jail/s.cfg"
+expect allow-read-refuses 2 "^$tmp/jail/s.cfg:2:10: '$tmp/jail/../outside/mats.cfg' is outside the directories --allow-read allows\$" -- \
+  "$raytex" render "$tmp/jail/s.cfg" -o "$tmp/jail.png" --allow-read "$tmp/jail"
+check allow-read-no-output test ! -e "$tmp/jail.png"
+expect allow-read-two-dirs 0 '' -- "$raytex" render "$tmp/jail/s.cfg" -o "$tmp/jail.png" --width 8 --height 8 \
+  --allow-read "$tmp/jail" --allow-read "$tmp/outside"
+expect allow-read-relative 0 '' -- bash -c "cd '$tmp' && '$raytex' render jail/s.cfg -o jail.png --width 8 \
+  --height 8 --allow-read outside --allow-read ./jail/"
+expect allow-read-reference 2 'is outside the directories --allow-read allows' -- "$raytex" render \
+  "$tmp/jail/s.cfg" -o "$tmp/jail.png" --reference --allow-read "$tmp/jail"
+expect allow-read-bench 2 'is outside the directories --allow-read allows' -- "$raytex" bench \
+  "$tmp/jail/s.cfg" --allow-read "$tmp/jail"
+
 expect no-driver 1 'mesa-vulkan-drivers' -- env VK_ICD_FILENAMES=/nonexistent.json "$raytex" render \
   "$src/scenes/textures.cfg" -o "$tmp/none.png"
 check no-driver-no-output test ! -e "$tmp/none.png"

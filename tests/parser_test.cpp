@@ -720,6 +720,89 @@ TEST_F(ParserFiles, OverlongPathsAreRefusedWithoutQuotingThem) {
   EXPECT_EQ(fileErrorOf(img), img + ":1:39: file path is longer than 4096 bytes");
 }
 
+// ---------------------------------------------------------------- --allow-read
+
+class ParserAllowRead : public ParserFiles {
+ protected:
+  void SetUp() override {
+    ParserFiles::SetUp();
+    write("allowed/mats.cfg", "material m { }\n");
+    write("allowed/sub/more.cfg", "material n { }\n");
+    write("other/secret.cfg", "material s { }\n");
+    write("other2/mats.cfg", "material o { }\n");
+  }
+  // The error of parsing `text` as scene allowed/s.cfg under --allow-read dirs.
+  std::string errorUnder(const std::string& text, std::vector<std::string> dirs) {
+    std::string scene = write("allowed/s.cfg", text + "sphere { }\n");
+    try {
+      parseSceneFile(scene, ReadPolicy{dirs});
+    } catch (const SceneError& e) {
+      return e.what();
+    }
+    return "<no error>";
+  }
+  std::string outside(const std::string& line, const std::string& col, const std::string& p) {
+    return path("allowed/s.cfg") + ":" + line + ":" + col + ": '" + p + "' is outside the directories --allow-read allows";
+  }
+};
+
+TEST_F(ParserAllowRead, IncludesInsideTheTreeAreRead) {
+  EXPECT_EQ(errorUnder("#include \"mats.cfg\"\n#include \"sub/more.cfg\"\n", {path("allowed")}), "<no error>");
+  EXPECT_EQ(errorUnder("#include \"sub/../mats.cfg\"\n", {path("allowed") + "/"}), "<no error>");
+}
+
+TEST_F(ParserAllowRead, DotDotEscapesAreRefused) {
+  EXPECT_EQ(errorUnder("#include \"../other/secret.cfg\"\n", {path("allowed")}),
+            outside("1", "10", path("allowed/../other/secret.cfg")));
+  // Refused the same way whether or not the file exists.
+  EXPECT_EQ(errorUnder("#include \"../other/none.cfg\"\n", {path("allowed")}),
+            outside("1", "10", path("allowed/../other/none.cfg")));
+  // A sibling whose name starts with the allowed one is not inside it.
+  write("allowed2/x.cfg", "material x { }\n");
+  EXPECT_EQ(errorUnder("#include \"../allowed2/x.cfg\"\n", {path("allowed")}),
+            outside("1", "10", path("allowed/../allowed2/x.cfg")));
+}
+
+TEST_F(ParserAllowRead, SymlinkEscapesAreRefused) {
+  fs::create_symlink(dir_ / "other/secret.cfg", dir_ / "allowed/link.cfg");
+  fs::create_directory_symlink(dir_ / "other", dir_ / "allowed/linkdir");
+  EXPECT_EQ(errorUnder("#include \"link.cfg\"\n", {path("allowed")}), outside("1", "10", path("allowed/link.cfg")));
+  EXPECT_EQ(errorUnder("\n#include \"linkdir/secret.cfg\"\n", {path("allowed")}),
+            outside("2", "10", path("allowed/linkdir/secret.cfg")));
+  // A symlink inside the tree to a file inside the tree is fine.
+  fs::create_symlink(dir_ / "allowed/mats.cfg", dir_ / "allowed/inner.cfg");
+  EXPECT_EQ(errorUnder("#include \"inner.cfg\"\n", {path("allowed")}), "<no error>");
+}
+
+TEST_F(ParserAllowRead, ImagesOutsideAreRefused) {
+  EXPECT_EQ(errorUnder("material i { texture = image { file = \"../other/x.png\"; } }\n", {path("allowed")}),
+            outside("1", "39", path("other/x.png")));
+  EXPECT_EQ(errorUnder("material i { texture = image { file = \"x.png\"; } }\n", {path("allowed")}), "<no error>");
+  // Without --allow-read, nothing is confined.
+  EXPECT_EQ(errorUnder("material i { texture = image { file = \"../other/x.png\"; } }\n"
+                       "#include \"../other/secret.cfg\"\n",
+                       {}),
+            "<no error>");
+}
+
+TEST_F(ParserAllowRead, TwoTreesAndRelativeDirectories) {
+  EXPECT_EQ(errorUnder("#include \"../other2/mats.cfg\"\n#include \"mats.cfg\"\n", {path("allowed"), path("other2")}),
+            "<no error>");
+  EXPECT_EQ(errorUnder("#include \"../other2/mats.cfg\"\n#include \"../other/secret.cfg\"\n",
+                       {path("allowed"), path("other2")}),
+            outside("2", "10", path("allowed/../other/secret.cfg")));
+  // Relative to the working directory.
+  fs::path cwd = fs::current_path();
+  fs::current_path(dir_ / "other2");
+  std::string ok = errorUnder("#include \"mats.cfg\"\n", {"../allowed"});
+  std::string bad = errorUnder("#include \"../other/secret.cfg\"\n", {"../allowed", "."});
+  std::string good = errorUnder("#include \"../other2/mats.cfg\"\n", {"../allowed", "."});
+  fs::current_path(cwd);
+  EXPECT_EQ(ok, "<no error>");
+  EXPECT_EQ(bad, outside("1", "10", path("allowed/../other/secret.cfg")));
+  EXPECT_EQ(good, "<no error>");
+}
+
 // ---------------------------------------------------------------- robustness
 
 TEST(ParserRobustness, TruncatedAndMutatedInputsOnlyEverThrowSceneError) {
