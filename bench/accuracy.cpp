@@ -7,6 +7,7 @@
 #include "bench.h"
 #include "gpu_scene.h"
 #include "image_io.h"
+#include "output_file.h"
 #include "parser.h"
 #include "reference_render.h"
 #include "renderer.h"

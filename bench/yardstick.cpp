@@ -19,6 +19,7 @@
 #include "common.h"
 #include "gpu_scene.h"
 #include "image_io.h"
+#include "output_file.h"
 #include "median.h"
 #include "noise.h"
 #include "parser.h"

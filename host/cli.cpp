@@ -36,7 +36,8 @@ const char* usageText() {
          "       raytex --help | --version\n"
          "\n"
          "render   Ray-trace SCENE (a .cfg file) on a Vulkan device and write a PNG.\n"
-         "  -o, --output FILE  output PNG (default out.png), written atomically\n"
+         "  -o, --output FILE  output PNG (default out.png), written atomically; a device or FIFO is\n"
+         "                     written through (not atomic); the scene's own files are refused\n"
          "  --width W          image width in pixels (default: the scene's render block, else 640)\n"
          "  --height H         image height in pixels (default: the scene's render block, else 480)\n"
          "  --spp N            samples per pixel, a square number (1, 4, 9, 16, ...): an N x N\n"
@@ -75,7 +76,8 @@ const char* usageText() {
          "  --json             print one JSON object (keys in docs/performance.md) instead of a table\n"
          "devices  List the Vulkan devices and their indices.\n"
          "\n"
-         "Exit codes: 0 success, 1 runtime failure (Vulkan, output file), 2 bad input (usage, scene).\n"
+         "Exit codes: 0 success, 1 runtime failure (Vulkan, output file or stdout not written, out of\n"
+         "memory), 2 bad input (usage, scene, an output that is a scene file or image).\n"
          "Scene format: docs/scene-format.md\n";
 }
 

@@ -1,6 +1,8 @@
 #include "headless.h"
 
+#include "exit_status.h"
 #include "gpu_scene.h"
+#include "output_file.h"
 #include "parser.h"
 #include "renderer.h"
 
@@ -41,6 +43,10 @@ int renderHeadless(const RenderOptions& options, uint32_t extraFrames, HeadlessR
     std::string error;
     if (!resolveJob(options, scene.render, 1, &out->job, &error)) {
       fprintf(stderr, "raytex: %s\n", error.c_str());
+      return 2;
+    }
+    if (std::string clash = outputClash(options.output, scene); !clash.empty()) {
+      fprintf(stderr, "raytex: %s\n", clash.c_str());
       return 2;
     }
     gpuScene = buildGpuScene(scene, out->job.width, out->job.height, out->job.filterBox);
@@ -124,7 +130,7 @@ int renderHeadless(const RenderOptions& options, uint32_t extraFrames, HeadlessR
       return 1;
     }
   } catch (const std::exception& e) {
-    fprintf(stderr, "raytex: %s\n", e.what());
+    fprintf(stderr, "raytex: %s\n", exceptionText(e).c_str());
     destroyRenderer(renderer);
     return 1;
   }

@@ -32,9 +32,9 @@ struct HeadlessRender {
   size_t nonFinite = 0;  // colour values written as black
 };
 
-// Encodes `image` as PNG and writes it to `output` atomically, or only encodes it when `output`
-// is empty (bench); warns of non-finite values written as black. Returns 0, or 1 with a
-// one-line message on stderr.
+// Encodes `image` as PNG and writes it to `output` (writeFileAtomic), or only encodes it
+// when `output` is empty (bench); warns of non-finite values written as black. Returns 0, or
+// 1 with a one-line message on stderr.
 int savePng(const std::string& output, const ImageRGBA8& image, size_t nonFinite);
 
 // Renders options.scene on Vulkan, then `extraFrames` more frames of the same image (timed),

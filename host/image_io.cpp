@@ -301,39 +301,6 @@ std::vector<uint8_t> encodePng(const ImageRGBA8& image) {
   return png;
 }
 
-void writePngAtomic(const std::string& path, const ImageRGBA8& image) {
-  std::vector<uint8_t> png = encodePng(image);
-  if (png.empty()) throw std::runtime_error("cannot encode PNG for '" + path + "'");
-  writeFileAtomic(path, png);
-}
-
-void writeFileAtomic(const std::string& path, const std::vector<uint8_t>& png) {
-  std::string tmp = path + ".tmp-XXXXXX";
-  int fd = mkstemp(tmp.data());
-  if (fd < 0) throw std::runtime_error("cannot write '" + path + "': " + strerror(errno));
-  size_t written = 0;
-  while (written < png.size()) {
-    ssize_t n = write(fd, png.data() + written, png.size() - written);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) {
-      int err = n < 0 ? errno : EIO;
-      close(fd);
-      unlink(tmp.c_str());
-      throw std::runtime_error("cannot write '" + path + "': " + strerror(err));
-    }
-    written += size_t(n);
-  }
-  // mkstemp creates 0600; give the image the usual permissions.
-  mode_t mask = umask(0);
-  umask(mask);
-  fchmod(fd, 0666 & ~mask);
-  if (close(fd) != 0 || rename(tmp.c_str(), path.c_str()) != 0) {
-    int err = errno;
-    unlink(tmp.c_str());
-    throw std::runtime_error("cannot write '" + path + "': " + strerror(err));
-  }
-}
-
 ImageDiff compareImages(const ImageRGBA8& a, const ImageRGBA8& b) {
   ImageDiff diff;
   if (a.width != b.width || a.height != b.height) {

@@ -1,5 +1,5 @@
-// Image files and pixel conversions: PNG/JPEG decode, sRGB encode, atomic PNG
-// write, and image comparison for tests. No Vulkan.
+// Image files and pixel conversions: PNG/JPEG decode, sRGB encode, PNG
+// encode, and image comparison for tests. No Vulkan.
 #pragma once
 
 #include <cstdint>
@@ -37,15 +37,8 @@ ImageRGBA8 encodeSrgb(const float* rgba, int width, int height, size_t* nonFinit
 double srgbToLinear(double encoded);  // encoded in [0, 1]
 double linearToSrgb(double linear);   // linear in [0, 1]
 
-// Writes a PNG through a temporary file in the same directory and a rename, so `path`
-// is either the complete new image or untouched. Throws std::runtime_error naming the path.
-void writePngAtomic(const std::string& path, const ImageRGBA8& image);
-
 // The PNG file's bytes (RGB, 8 bits; alpha dropped); empty if encoding failed.
 std::vector<uint8_t> encodePng(const ImageRGBA8& image);
-
-// Writes `bytes` to `path` atomically, as writePngAtomic. Throws std::runtime_error.
-void writeFileAtomic(const std::string& path, const std::vector<uint8_t>& bytes);
 
 struct ImageDiff {
   int maxError = 0;        // largest channel difference, 0..255 (RGB only)

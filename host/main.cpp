@@ -2,8 +2,10 @@
 #include "cli.h"
 #include "benchmark.h"
 #include "device.h"
+#include "exit_status.h"
 #include "headless.h"
 #include "image_io.h"
+#include "output_file.h"
 #include "parser.h"
 #include "reference_render.h"
 #include "viewer.h"
@@ -64,19 +66,14 @@ int runRender(const RenderOptions& options) {
     fprintf(stderr, "%s\n", e.what());
     return 2;
   }
+  if (std::string clash = outputClash(options.output, scene); !clash.empty()) {
+    fprintf(stderr, "raytex: %s\n", clash.c_str());
+    return 2;
+  }
   return runReference(options, job, scene, t, lapMs(t));
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  std::vector<std::string> args(argv + 1, argv + argc);
-  CliArgs cli;
-  std::string error;
-  if (!parseCli(args, &cli, &error)) {
-    fprintf(stderr, "raytex: %s\n", error.c_str());
-    return 2;
-  }
+int runCommand(const CliArgs& cli) {
   switch (cli.command) {
     case CliCommand::Help:
       fputs(usageText(), stdout);
@@ -95,4 +92,19 @@ int main(int argc, char** argv) {
       return runBench(cli.render, cli.bench);
   }
   return 1;
+}
+
+}  // namespace
+
+// Every command ends here: an escaping exception is one line and exit 1, and so is output
+// that could not be written to stdout.
+int main(int argc, char** argv) {
+  std::vector<std::string> args(argv + 1, argv + argc);
+  CliArgs cli;
+  std::string error;
+  if (!parseCli(args, &cli, &error)) {
+    fprintf(stderr, "raytex: %s\n", error.c_str());
+    return checkedExit(2, stdout);
+  }
+  return checkedExit(runGuarded([&] { return runCommand(cli); }), stdout);
 }

@@ -1,8 +1,10 @@
 #include "viewer.h"
 
+#include "exit_status.h"
 #include "gpu_scene.h"
 #include "image_io.h"
 #include "median.h"
+#include "output_file.h"
 #include "parser.h"
 #include "renderer.h"
 #include "window.h"
@@ -252,6 +254,10 @@ int runViewer(const RenderOptions& options) {
     fprintf(stderr, "%s\n", e.what());
     return 2;
   }
+  if (std::string clash = outputClash(options.output, state.scene); !clash.empty()) {  // F12 writes -o
+    fprintf(stderr, "raytex: %s\n", clash.c_str());
+    return 2;
+  }
   RenderJob job;
   std::string error;
   if (!resolveJob(options, state.scene.render, kViewerSamplesPerPixel, &job, &error) ||
@@ -378,7 +384,7 @@ int runViewer(const RenderOptions& options) {
     fprintf(stderr, "%s\n", e.what());
     rc = 2;
   } catch (const std::exception& e) {
-    fprintf(stderr, "raytex: %s\n", e.what());
+    fprintf(stderr, "raytex: %s\n", exceptionText(e).c_str());
     rc = 1;
   }
   destroyWindow(window, renderer.device);

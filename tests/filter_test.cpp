@@ -14,6 +14,7 @@
 // are written to RAYTEX_BINARY_DIR/test-output/filter_<kind>_{point,box,reference}.png.
 #include "gpu_fixture.h"
 #include "image_io.h"
+#include "output_file.h"
 #include "noise.h"
 #include "parser.h"
 #include "reference.h"

@@ -1,4 +1,5 @@
 #include "image_io.h"
+#include "output_file.h"
 
 #include <gtest/gtest.h>
 

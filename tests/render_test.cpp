@@ -6,6 +6,7 @@
 #include "gpu_fixture.h"
 #include "gpu_scene.h"
 #include "image_io.h"
+#include "output_file.h"
 #include "parser.h"
 #include "reference.h"
 #include "reference_render.h"

@@ -14,5 +14,5 @@ supp=$PWD/tests/sanitize
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:strict_string_checks=1:detect_stack_use_after_return=1
 export LSAN_OPTIONS=suppressions=$supp/lsan.supp:print_suppressions=0
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
-export RAYTEX_SANITIZED=1  # tests/cli_test.sh: skip the address-space limit test (ASan's shadow needs terabytes)
+export RAYTEX_SANITIZED=1  # tests/cli_test.sh, output_test.sh: skip the address-space limit tests (ASan's shadow needs terabytes)
 ctest --test-dir "$build" -LE fuzz --output-on-failure -j2

@@ -1,0 +1,268 @@
+// writeFileAtomic and outputClash (host/output_file.h) on real files, device nodes and FIFOs in
+// a temporary directory. Device nodes need root (mknod); those tests skip without it.
+#include "exit_status.h"
+#include "output_file.h"
+#include "parser.h"
+
+#include <gtest/gtest.h>
+
+#include <csignal>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <new>
+
+#include <fcntl.h>
+#include <sys/resource.h>
+#include <sys/stat.h>
+#include <sys/sysmacros.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path tempDir(const std::string& name) {
+  fs::path dir = fs::temp_directory_path() / ("raytex_output_file_" + name);
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+std::vector<uint8_t> someBytes(size_t n) {
+  std::vector<uint8_t> bytes(n);
+  for (size_t i = 0; i < n; ++i) bytes[i] = uint8_t(i * 31 + 7);
+  return bytes;
+}
+
+std::string readFile(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+void writeText(const fs::path& path, const std::string& text) { std::ofstream(path, std::ios::binary) << text; }
+
+size_t entries(const fs::path& dir) { return size_t(std::distance(fs::directory_iterator(dir), {})); }
+
+// The message of the std::runtime_error writeFileAtomic throws; empty if it does not throw.
+std::string writeError(const fs::path& path, const std::vector<uint8_t>& bytes) {
+  try {
+    writeFileAtomic(path.string(), bytes);
+  } catch (const std::runtime_error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// A character device node like /dev/null (1, 3) or /dev/full (1, 7), or skip.
+#define MAKE_CHAR_DEVICE(path, minor)                                                       \
+  if (mknod((path).c_str(), S_IFCHR | 0666, makedev(1, (minor))) != 0)                      \
+  GTEST_SKIP() << "cannot mknod " << (path) << " (" << strerror(errno) << "): not root?"
+
+TEST(OutputFile, WritesThroughToANullDeviceAndKeepsIt) {
+  fs::path dir = tempDir("null");
+  fs::path null = dir / "null";
+  MAKE_CHAR_DEVICE(null, 3);
+  EXPECT_EQ(writeError(null, someBytes(1000)), "");
+  EXPECT_TRUE(fs::is_character_file(null));
+  EXPECT_EQ(entries(dir), 1u);  // no temporary file, no PNG beside it
+}
+
+TEST(OutputFile, AFullDeviceIsAWriteErrorAndStaysADevice) {
+  fs::path dir = tempDir("full");
+  fs::path full = dir / "full";
+  MAKE_CHAR_DEVICE(full, 7);
+  EXPECT_EQ(writeError(full, someBytes(1000)), "cannot write '" + full.string() + "': No space left on device");
+  EXPECT_TRUE(fs::is_character_file(full));
+  EXPECT_EQ(entries(dir), 1u);
+}
+
+TEST(OutputFile, AFifoWithNoReaderIsAnErrorNotAWait) {
+  fs::path dir = tempDir("fifo");
+  fs::path fifo = dir / "fifo";
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+  EXPECT_EQ(writeError(fifo, someBytes(100)), "cannot write '" + fifo.string() + "': no process is reading it");
+  EXPECT_TRUE(fs::is_fifo(fifo));
+}
+
+TEST(OutputFile, AFifoWithAReaderGetsTheBytes) {
+  fs::path dir = tempDir("fifo_reader");
+  fs::path fifo = dir / "fifo";
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+  int reader = open(fifo.c_str(), O_RDONLY | O_NONBLOCK);
+  ASSERT_GE(reader, 0);
+  std::vector<uint8_t> bytes = someBytes(1000);  // fits in the pipe's buffer
+  EXPECT_EQ(writeError(fifo, bytes), "");
+  std::vector<uint8_t> got(2000);
+  ssize_t n = read(reader, got.data(), got.size());
+  close(reader);
+  got.resize(size_t(std::max<ssize_t>(n, 0)));
+  EXPECT_EQ(got, bytes);
+  EXPECT_TRUE(fs::is_fifo(fifo));
+}
+
+TEST(OutputFile, ASymlinkIsFollowedAndItsTargetReplaced) {
+  fs::path dir = tempDir("symlink");
+  fs::create_directories(dir / "real");
+  writeText(dir / "real" / "a.png", "old");
+  fs::create_symlink("real/a.png", dir / "link.png");
+  std::vector<uint8_t> bytes = someBytes(50);
+  EXPECT_EQ(writeError(dir / "link.png", bytes), "");
+  EXPECT_TRUE(fs::is_symlink(dir / "link.png"));
+  EXPECT_EQ(readFile(dir / "real" / "a.png"), std::string(bytes.begin(), bytes.end()));
+  EXPECT_EQ(entries(dir / "real"), 1u);
+}
+
+TEST(OutputFile, AnExistingFileKeepsItsModeAndANewOneFollowsTheUmask) {
+  fs::path dir = tempDir("mode");
+  writeText(dir / "private.png", "old");
+  ASSERT_EQ(chmod((dir / "private.png").c_str(), 0600), 0);
+  EXPECT_EQ(writeError(dir / "private.png", someBytes(10)), "");
+  struct stat st;
+  ASSERT_EQ(stat((dir / "private.png").c_str(), &st), 0);
+  EXPECT_EQ(st.st_mode & 07777, 0600u);
+
+  mode_t mask = umask(027);
+  EXPECT_EQ(writeError(dir / "new.png", someBytes(10)), "");
+  umask(mask);
+  ASSERT_EQ(stat((dir / "new.png").c_str(), &st), 0);
+  EXPECT_EQ(st.st_mode & 07777, 0640u);
+}
+
+TEST(OutputFile, NamesUpTo255BytesAreWritten) {
+  fs::path dir = tempDir("long");
+  for (size_t length : {245, 250, 255}) {
+    std::string name = std::string(length - 4, 'n') + ".png";
+    std::vector<uint8_t> bytes = someBytes(length);
+    EXPECT_EQ(writeError(dir / name, bytes), "") << length;
+    EXPECT_EQ(readFile(dir / name), std::string(bytes.begin(), bytes.end()));
+  }
+  EXPECT_EQ(entries(dir), 3u);
+}
+
+TEST(OutputFile, TheTempNameFitsTheLimitAndCutsNoCharacter) {
+  EXPECT_EQ(tempTemplate("dir/a.png", 255), "dir/a.png.tmp-XXXXXX");
+  std::string name = std::string(251, 'a') + ".png";
+  std::string tmp = tempTemplate("/x/" + name, 255);
+  EXPECT_EQ(tmp, "/x/" + std::string(244, 'a') + ".tmp-XXXXXX");
+  std::string utf8;  // "é" is two bytes: 122 of them, then ".png" (248 bytes)
+  for (int i = 0; i < 122; ++i) utf8 += "\xc3\xa9";
+  tmp = tempTemplate(utf8 + ".png", 255);  // 244 bytes kept: whole characters
+  EXPECT_EQ(tmp, utf8 + ".tmp-XXXXXX");
+  tmp = tempTemplate(utf8 + ".png", 254);  // 243 bytes would split the last one: 242
+  EXPECT_EQ(tmp, utf8.substr(0, 242) + ".tmp-XXXXXX");
+}
+
+// Forks a child that writes `bytes` to `path` and is stopped in the middle by the test hook,
+// sends it `sig`, and returns its wait status.
+int signalInTheMiddleOfAWrite(const fs::path& path, int sig, bool* tempSeen) {
+  pid_t child = fork();
+  if (child == 0) {
+    signal(sig, SIG_DFL);
+    setenv("RAYTEX_TEST_PAUSE_IN_WRITE", "1", 1);
+    try {
+      writeFileAtomic(path.string(), someBytes(100000));
+    } catch (...) {
+    }
+    _exit(0);
+  }
+  int status = 0;
+  waitpid(child, &status, WUNTRACED);
+  *tempSeen = WIFSTOPPED(status) && entries(path.parent_path()) == 2;
+  if (!WIFSTOPPED(status)) return status;  // it ended without stopping: no test hook
+  kill(child, sig);
+  kill(child, SIGCONT);
+  waitpid(child, &status, 0);
+  return status;
+}
+
+TEST(OutputFile, ASignalDuringTheWriteRemovesTheTempFileAndEndsWithTheSignal) {
+  for (int sig : {SIGINT, SIGTERM, SIGHUP}) {
+    fs::path dir = tempDir("signal");
+    writeText(dir / "out.png", "old");
+    bool tempSeen = false;
+    int status = signalInTheMiddleOfAWrite(dir / "out.png", sig, &tempSeen);
+    EXPECT_TRUE(tempSeen) << strsignal(sig);
+    EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == sig) << strsignal(sig) << ": status " << status;
+    EXPECT_EQ(entries(dir), 1u) << strsignal(sig);
+    EXPECT_EQ(readFile(dir / "out.png"), "old") << strsignal(sig);
+  }
+}
+
+TEST(OutputFile, AFileSizeLimitIsAWriteErrorThatLeavesNoTempFile) {
+  fs::path dir = tempDir("fsize");
+  writeText(dir / "out.png", "old");
+  pid_t child = fork();
+  if (child == 0) {
+    signal(SIGXFSZ, SIG_DFL);
+    struct rlimit limit = {1024, 1024};
+    setrlimit(RLIMIT_FSIZE, &limit);
+    std::string error = writeError(dir / "out.png", someBytes(100000));
+    _exit(error == "cannot write '" + (dir / "out.png").string() + "': File too large" ? 0 : 3);
+  }
+  int status = 0;
+  waitpid(child, &status, 0);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << "status " << status;
+  EXPECT_EQ(entries(dir), 1u);
+  EXPECT_EQ(readFile(dir / "out.png"), "old");
+}
+
+TEST(OutputFile, TheSceneItsIncludesAndImagesAreNotOutputs) {
+  fs::path dir = tempDir("clash");
+  writeText(dir / "inc.cfg", "material m { texture = image { file = \"tex.png\"; } }\n");
+  writeText(dir / "tex.png", "not read here");
+  writeText(dir / "s.cfg", "#include \"inc.cfg\"\nsphere { m; }\n");
+  Scene scene = parseSceneFile((dir / "s.cfg").string());
+  auto clash = [&](const fs::path& p) { return outputClash(p.string(), scene); };
+  EXPECT_EQ(clash(dir / "s.cfg"), "refusing to write '" + (dir / "s.cfg").string() + "': it is the scene file");
+  EXPECT_EQ(clash(dir / "inc.cfg"),
+            "refusing to write '" + (dir / "inc.cfg").string() + "': it is a file the scene includes");
+  EXPECT_EQ(clash(dir / "tex.png"),
+            "refusing to write '" + (dir / "tex.png").string() + "': it is an image the scene uses");
+  fs::create_hard_link(dir / "s.cfg", dir / "hard.cfg");  // same inode, another name
+  fs::create_symlink("inc.cfg", dir / "soft.png");
+  EXPECT_NE(clash(dir / "hard.cfg"), "");
+  EXPECT_NE(clash(dir / "soft.png"), "");
+  writeText(dir / "other.png", "x");
+  EXPECT_EQ(clash(dir / "other.png"), "");
+  EXPECT_EQ(clash(dir / "new.png"), "");
+  EXPECT_EQ(clash(""), "");
+}
+
+TEST(ExitStatus, EscapingExceptionsBecomeOneLineAndExitOne) {
+  EXPECT_EQ(runGuarded([] { return 2; }), 2);
+  testing::internal::CaptureStderr();
+  EXPECT_EQ(runGuarded([]() -> int { throw std::bad_alloc(); }), 1);
+  EXPECT_EQ(testing::internal::GetCapturedStderr(), "raytex: out of memory\n");
+  testing::internal::CaptureStderr();
+  EXPECT_EQ(runGuarded([]() -> int { throw std::runtime_error("vkFoo failed"); }), 1);
+  EXPECT_EQ(testing::internal::GetCapturedStderr(), "raytex: vkFoo failed\n");
+  testing::internal::CaptureStderr();
+  EXPECT_EQ(runGuarded([]() -> int { throw 42; }), 1);
+  EXPECT_EQ(testing::internal::GetCapturedStderr(), "raytex: unexpected internal error\n");
+}
+
+TEST(ExitStatus, AFailedWriteToTheOutputStreamIsExitOne) {
+  fs::path dir = tempDir("stdout");
+  fs::path full = dir / "full";
+  MAKE_CHAR_DEVICE(full, 7);
+  FILE* out = fopen(full.c_str(), "w");
+  ASSERT_NE(out, nullptr);
+  testing::internal::CaptureStderr();  // flushes every stream: the text goes in after it
+  fputs("usage: ...\n", out);
+  int rc = checkedExit(0, out);
+  std::string err = testing::internal::GetCapturedStderr();
+  fclose(out);
+  EXPECT_EQ(rc, 1);
+  EXPECT_EQ(err, "raytex: cannot write to standard output: No space left on device\n");
+  FILE* fine = fopen((dir / "fine").c_str(), "w");
+  ASSERT_NE(fine, nullptr);
+  fputs("ok\n", fine);
+  EXPECT_EQ(checkedExit(0, fine), 0);
+  EXPECT_EQ(checkedExit(2, fine), 2);
+  fclose(fine);
+}
+
+}  // namespace
