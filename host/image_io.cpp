@@ -11,9 +11,6 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#define STB_IMAGE_IMPLEMENTATION
-#define STBI_FAILURE_USERMSG
-#include <stb_image.h>
 #include <zlib.h>
 
 namespace {
@@ -39,35 +36,22 @@ unsigned char* deflateFast(unsigned char* data, int size, int* outSize, int /*st
 #define STB_IMAGE_RESIZE_IMPLEMENTATION
 #include <stb_image_resize.h>
 
-bool loadImage(const std::string& path, ImageRGBA8* image, std::string* error) {
-  int w = 0, h = 0, channels = 0;
-  stbi_uc* data = stbi_load(path.c_str(), &w, &h, &channels, 4);
-  if (!data) {
-    FILE* f = fopen(path.c_str(), "rb");
-    if (!f) {
-      *error = std::string("cannot open image '") + path + "': " + strerror(errno);
-    } else {
-      fclose(f);
-      *error = std::string("cannot decode image '") + path + "': " + stbi_failure_reason();
-    }
-    return false;
-  }
-  image->width = w;
-  image->height = h;
-  image->pixels.assign(data, data + size_t(w) * h * 4);
-  stbi_image_free(data);
-  return true;
-}
-
 ImageRGBA8 resizeImage(const ImageRGBA8& image, int width, int height) {
   if (image.width == width && image.height == height) return image;
   ImageRGBA8 out;
   out.width = width;
   out.height = height;
   out.pixels.resize(size_t(width) * height * 4);
-  stbir_resize_uint8_srgb(image.pixels.data(), image.width, image.height, 0, out.pixels.data(),
-                          width, height, 0, 4, 3, 0);
+  resizeImage(image, width, height, out.pixels.data());
   return out;
+}
+
+void resizeImage(const ImageRGBA8& image, int width, int height, uint8_t* out) {
+  if (image.width == width && image.height == height) {
+    std::copy(image.pixels.begin(), image.pixels.end(), out);
+    return;
+  }
+  stbir_resize_uint8_srgb(image.pixels.data(), image.width, image.height, 0, out, width, height, 0, 4, 3, 0);
 }
 
 namespace {
@@ -202,41 +186,48 @@ int mipLevelCount(int width, int height) {
 std::vector<ImageRGBA8> mipChain(const ImageRGBA8& image) { return mipChain(ImageRGBA8(image)); }
 
 std::vector<ImageRGBA8> mipChain(ImageRGBA8&& level0) {
-  const int levels = mipLevelCount(level0.width, level0.height);
+  std::vector<ImageRGBA8> above = mipLevelsAbove(level0.pixels.data(), level0.width, level0.height);
   std::vector<ImageRGBA8> chain;
-  chain.reserve(size_t(levels));  // no reallocation: `image` stays valid
+  chain.reserve(above.size() + 1);
   chain.push_back(std::move(level0));
-  const ImageRGBA8& image = chain[0];
-  if (image.width <= 0 || image.height <= 0 || levels == 1) return chain;
+  for (ImageRGBA8& level : above) chain.push_back(std::move(level));
+  return chain;
+}
+
+std::vector<ImageRGBA8> mipLevelsAbove(const uint8_t* pixels, int width, int height) {
+  const int levels = mipLevelCount(width, height);
+  std::vector<ImageRGBA8> chain;
+  if (width <= 0 || height <= 0 || levels == 1) return chain;
+  chain.reserve(size_t(levels - 1));
   const float* decode = srgbDecodeTable();
-  auto linear = [&](size_t i, int c) { return c < 3 ? decode[image.pixels[i + c]] : image.pixels[i + c] / 255.0f; };
+  auto linear = [&](size_t i, int c) { return c < 3 ? decode[pixels[i + c]] : pixels[i + c] / 255.0f; };
   LinearImage level;
-  int w1 = std::max(1, image.width >> 1), h1 = std::max(1, image.height >> 1);
-  if (image.width == 2 * w1 && image.height == 2 * h1) {
+  int w1 = std::max(1, width >> 1), h1 = std::max(1, height >> 1);
+  if (width == 2 * w1 && height == 2 * h1) {
     // Even sizes: level 1 straight from the bytes (no float copy of the large level 0).
     level.width = w1;
     level.height = h1;
     level.rgba.resize(size_t(w1) * h1 * 4);
     for (int y = 0; y < h1; ++y)
       for (int x = 0; x < w1; ++x) {
-        size_t a = (size_t(2 * y) * image.width + 2 * x) * 4, b = a + 4;
-        size_t c = a + size_t(image.width) * 4, d = c + 4;
+        size_t a = (size_t(2 * y) * width + 2 * x) * 4, b = a + 4;
+        size_t c = a + size_t(width) * 4, d = c + 4;
         for (int k = 0; k < 4; ++k)
           level.rgba[(size_t(y) * w1 + x) * 4 + k] =
               0.25f * ((linear(a, k) + linear(b, k)) + (linear(c, k) + linear(d, k)));
       }
   } else {
     LinearImage base;
-    base.width = image.width;
-    base.height = image.height;
-    base.rgba.resize(image.pixels.size());
-    for (size_t i = 0; i < image.pixels.size(); i += 4)
+    base.width = width;
+    base.height = height;
+    base.rgba.resize(size_t(width) * height * 4);
+    for (size_t i = 0; i < base.rgba.size(); i += 4)
       for (int k = 0; k < 4; ++k) base.rgba[i + k] = linear(i, k);
     level = downsample(base, w1, h1);
   }
   chain.push_back(encodeLevel(level));
   for (int i = 2; i < levels; ++i) {
-    level = downsample(level, std::max(1, image.width >> i), std::max(1, image.height >> i));
+    level = downsample(level, std::max(1, width >> i), std::max(1, height >> i));
     chain.push_back(encodeLevel(level));
   }
   return chain;

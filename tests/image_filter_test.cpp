@@ -3,6 +3,7 @@
 // the float64 reference (bilinear level 0, supersampled: the box-filtered truth). Rendered on
 // a Vulkan device (lavapipe in CI) with validation on; every image is checked for NaN/inf.
 #include "gpu_fixture.h"
+#include "image_load.h"
 #include "parser.h"
 #include "reference.h"
 #include "reference_render.h"

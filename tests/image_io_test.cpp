@@ -1,4 +1,5 @@
 #include "image_io.h"
+#include "image_load.h"
 
 #include <gtest/gtest.h>
 

@@ -6,6 +6,7 @@
 #include "gpu_fixture.h"
 #include "gpu_scene.h"
 #include "image_io.h"
+#include "image_load.h"
 #include "parser.h"
 #include "reference.h"
 #include "reference_render.h"
