@@ -131,7 +131,7 @@ gpu::Plane packPlane(const Plane& p, const TextureDesc& texture, glm::dvec3 eye,
 // One sampler2DArray holds every image (lavapipe cannot index sampler arrays dynamically), so
 // all layers share the largest width and height. Each image is decoded straight into its
 // layer when it has that size (else into a buffer of its own, resampled into the layer), and
-// its mip levels are written straight to their place among imageMipPixels.
+// its mip levels are written row by row straight to their place among imageMipPixels.
 void fillImageLayers(GpuScene& g, bool mipmaps) {
   for (const SceneImage& image : g.images) {
     g.imageWidth = std::max(g.imageWidth, image.header.width);
@@ -155,19 +155,20 @@ void fillImageLayers(GpuScene& g, bool mipmaps) {
   }
   if (g.imageLevels == 1) return;
   // Level after level, each level layer after layer.
-  std::vector<size_t> levelOffset(size_t(g.imageLevels), 0);
+  std::vector<size_t> levelOffset(size_t(g.imageLevels), 0), levelLayerBytes(size_t(g.imageLevels), 0);
   size_t total = 0;
   for (int level = 1; level < g.imageLevels; ++level) {
     levelOffset[size_t(level)] = total;
-    total += size_t(std::max(1, g.imageWidth >> level)) * std::max(1, g.imageHeight >> level) * 4 * g.images.size();
+    levelLayerBytes[size_t(level)] =
+        size_t(std::max(1, g.imageWidth >> level)) * size_t(std::max(1, g.imageHeight >> level)) * 4;
+    total += levelLayerBytes[size_t(level)] * g.images.size();
   }
   g.imageMipPixels.resize(total);
   for (size_t i = 0; i < g.images.size(); ++i) {
-    std::vector<ImageRGBA8> levels = mipLevelsAbove(g.imagePixels.data() + i * layerBytes, g.imageWidth, g.imageHeight);
-    for (size_t l = 0; l < levels.size(); ++l) {
-      const std::vector<uint8_t>& texels = levels[l].pixels;
-      std::copy(texels.begin(), texels.end(), g.imageMipPixels.begin() + ptrdiff_t(levelOffset[l + 1] + i * texels.size()));
-    }
+    std::vector<uint8_t*> out;
+    for (int level = 1; level < g.imageLevels; ++level)
+      out.push_back(g.imageMipPixels.data() + levelOffset[size_t(level)] + i * levelLayerBytes[size_t(level)]);
+    writeMipLevels(g.imagePixels.data() + i * layerBytes, g.imageWidth, g.imageHeight, out.data());
   }
 }
 
