@@ -20,25 +20,24 @@ namespace {
 // Opens an image for reading: a regular file only, so that a FIFO or a device cannot block or
 // stream forever (checked before the open, which does not block, and again on what it opened).
 FILE* openImageFile(const std::string& path, std::string* error) {
+  auto fail = [&](const std::string& why) -> FILE* {
+    *error = "cannot open image '" + path + "': " + why;
+    return nullptr;
+  };
   struct stat st {};
-  if (stat(path.c_str(), &st) != 0) {
-    *error = "cannot open image '" + path + "': " + strerror(errno);
-    return nullptr;
-  }
-  int fd = S_ISREG(st.st_mode) ? open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC) : -1;
-  if (S_ISREG(st.st_mode) && fd < 0) {
-    *error = "cannot open image '" + path + "': " + strerror(errno);
-    return nullptr;
-  }
-  if (fd < 0 || fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
-    if (fd >= 0) close(fd);
-    *error = "cannot open image '" + path + "': not a regular file";
-    return nullptr;
+  if (stat(path.c_str(), &st) != 0) return fail(strerror(errno));
+  if (!S_ISREG(st.st_mode)) return fail("not a regular file");
+  int fd = open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+  if (fd < 0) return fail(strerror(errno));
+  if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {  // replaced since the stat
+    close(fd);
+    return fail("not a regular file");
   }
   FILE* file = fdopen(fd, "rb");
   if (!file) {
-    *error = "cannot open image '" + path + "': " + strerror(errno);
+    int err = errno;
     close(fd);
+    return fail(strerror(err));
   }
   return file;
 }
@@ -296,12 +295,12 @@ FILE* openAndProbe(const std::string& path, ImageHeader* header, std::string* er
   if (!file) return nullptr;
   uint8_t head[16];
   size_t n = fread(head, 1, sizeof(head), file);
-  bool ok = checkFormat(path, head, n, &header->format, error) && fseek(file, 0, SEEK_SET) == 0;
+  bool ok = checkFormat(path, head, n, &header->format, error);
   if (ok && header->format == ImageFormat::Png) {
     ok = fseek(file, 8, SEEK_SET) == 0 && probePng(file, path, header, error);
   } else if (ok) {
-    std::string message;
-    ok = runJpeg(file, header, nullptr, &message);
+    std::string message = "cannot seek";
+    ok = fseek(file, 0, SEEK_SET) == 0 && runJpeg(file, header, nullptr, &message);
     if (!ok) *error = "cannot decode image '" + path + "': " + message;
   }
   if (ok && (header->width > kMaxImageFileSide || header->height > kMaxImageFileSide)) {

@@ -24,7 +24,7 @@ void checkBudget(const std::vector<SceneImage>& images, bool mipmaps, uint32_t m
   }
   throw SceneError(last.loc, "image '" + last.path + "' (" + sizeText(last.header) + ") brings the scene's images to " +
                                  mibText(bytes) + " MiB on the GPU (" + std::to_string(images.size()) +
-                                 " layers of " + std::to_string(width) + "x" + std::to_string(height) +
+                                 (images.size() == 1 ? " layer of " : " layers of ") + std::to_string(width) + "x" + std::to_string(height) +
                                  (mipmaps ? ", 4 bytes a texel, with mip levels" : ", 4 bytes a texel") +
                                  "), over the budget of " + std::to_string(maxImageMiB) +
                                  " MiB (--max-image-mib N raises it)");

@@ -169,7 +169,7 @@ printf 'material e { texture = image { file = "%s/textures/earth.jpg"; }; }\nsph
 for command in render "render --reference" bench; do
   # shellcheck disable=SC2086  # the command's words
   expect "image-budget-${command// /-}" 2 "^$tmp/earth.cfg:1:39: image '$src/textures/earth.jpg' \(2048x1024\) brings \
-the scene's images to 8.0 MiB on the GPU \(1 layers of 2048x1024, 4 bytes a texel\), over the budget of 1 MiB \
+the scene's images to 8.0 MiB on the GPU \(1 layer of 2048x1024, 4 bytes a texel\), over the budget of 1 MiB \
 \(--max-image-mib N raises it\)$" -- "$raytex" $command "$tmp/earth.cfg" --max-image-mib 1 -o "$tmp/budget.png"
 done
 check image-budget-no-output test ! -e "$tmp/budget.png"
