@@ -2,6 +2,7 @@
 #pragma once
 
 #include "scene.h"
+#include "scene_images.h"
 
 #include <cstdint>
 #include <optional>
@@ -21,7 +22,7 @@ struct RenderOptions {
   bool stats = false;     // --stats: one line of phase times (view: frame times at exit)
   bool validate = false;  // --validate, or RAYTEX_VALIDATION=1: Vulkan validation layers
   uint32_t frames = 0;    // view --frames N: quit after N frames (accumulation restarting)
-  uint32_t maxImageMiB = 512;          // --max-image-mib N: budget of image texture bytes uploaded
+  uint32_t maxImageMiB = kDefaultMaxImageMiB;  // --max-image-mib N: budget of image texture bytes uploaded
   std::vector<std::string> allowRead;  // --allow-read DIR (repeatable): includes and images only there
 };
 

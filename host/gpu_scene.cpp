@@ -128,6 +128,50 @@ gpu::Plane packPlane(const Plane& p, const TextureDesc& texture, glm::dvec3 eye,
   return gp;
 }
 
+// One sampler2DArray holds every image (lavapipe cannot index sampler arrays dynamically), so
+// all layers share the largest width and height. Each image is decoded straight into its
+// layer when it has that size (else into a buffer of its own, resampled into the layer), and
+// its mip levels are written row by row straight to their place among imageMipPixels.
+void fillImageLayers(GpuScene& g, bool mipmaps) {
+  for (const SceneImage& image : g.images) {
+    g.imageWidth = std::max(g.imageWidth, image.header.width);
+    g.imageHeight = std::max(g.imageHeight, image.header.height);
+  }
+  g.imageLayers = int(g.images.size());
+  g.imageLevels = mipmaps ? mipLevelCount(g.imageWidth, g.imageHeight) : 1;
+  const size_t layerBytes = size_t(g.imageWidth) * g.imageHeight * 4;
+  g.imagePixels.resize(layerBytes * g.images.size());
+  for (size_t i = 0; i < g.images.size(); ++i) {
+    const SceneImage& image = g.images[i];
+    uint8_t* layer = g.imagePixels.data() + i * layerBytes;
+    if (image.header.width == g.imageWidth && image.header.height == g.imageHeight) {
+      decodeSceneImage(image, layer);
+    } else {
+      ImageRGBA8 own{image.header.width, image.header.height, {}};
+      own.pixels.resize(size_t(own.width) * own.height * 4);
+      decodeSceneImage(image, own.pixels.data());
+      resizeImage(own, g.imageWidth, g.imageHeight, layer);
+    }
+  }
+  if (g.imageLevels == 1) return;
+  // Level after level, each level layer after layer.
+  std::vector<size_t> levelOffset(size_t(g.imageLevels), 0), levelLayerBytes(size_t(g.imageLevels), 0);
+  size_t total = 0;
+  for (int level = 1; level < g.imageLevels; ++level) {
+    levelOffset[size_t(level)] = total;
+    levelLayerBytes[size_t(level)] =
+        size_t(std::max(1, g.imageWidth >> level)) * size_t(std::max(1, g.imageHeight >> level)) * 4;
+    total += levelLayerBytes[size_t(level)] * g.images.size();
+  }
+  g.imageMipPixels.resize(total);
+  for (size_t i = 0; i < g.images.size(); ++i) {
+    std::vector<uint8_t*> out;
+    for (int level = 1; level < g.imageLevels; ++level)
+      out.push_back(g.imageMipPixels.data() + levelOffset[size_t(level)] + i * levelLayerBytes[size_t(level)]);
+    writeMipLevels(g.imagePixels.data() + i * layerBytes, g.imageWidth, g.imageHeight, out.data());
+  }
+}
+
 }  // namespace
 
 void packCamera(GpuScene& g, const Scene& scene, uint32_t width, uint32_t height) {
@@ -155,13 +199,12 @@ void packCamera(GpuScene& g, const Scene& scene, uint32_t width, uint32_t height
   g.frame = f;
 }
 
-GpuScene buildGpuScene(const Scene& scene, uint32_t width, uint32_t height, bool mipmaps, bool allMaterials) {
+GpuScene buildGpuScene(const Scene& scene, uint32_t width, uint32_t height, bool mipmaps, bool allMaterials,
+                       uint32_t maxImageMiB) {
   GpuScene g;
   // Materials: only the used ones, re-indexed; image files become array layers.
   Material fallback = defaultMaterial();
   std::map<int, uint32_t> materialIndex;
-  std::map<std::string, uint32_t> imageLayer;
-  std::vector<ImageRGBA8> images;
   // The kernel's uniform blocks hold MAX_SPHERES, MAX_PLANES and MAX_LIGHTS: point at the first
   // one over.
   auto checkCount = [](const auto& items, size_t max, const char* what) {
@@ -197,22 +240,13 @@ GpuScene buildGpuScene(const Scene& scene, uint32_t width, uint32_t height, bool
   }
   for (int m = 0; allMaterials && m < int(scene.materials.size()) && packed.size() < MAX_MATERIALS; ++m)
     if (std::find(packed.begin(), packed.end(), m) == packed.end()) packed.push_back(m);
+  g.images = probeSceneImages(scene, packed, mipmaps, maxImageMiB);
   uint32_t packedKinds = 0;
   for (int m : packed) {
     const Material& material = materialAt(scene, m, fallback);
     uint32_t layer = 0;
-    if (material.texture.kind == TextureKind::Image) {
-      auto found = imageLayer.find(material.texture.imagePath);
-      if (found == imageLayer.end()) {
-        ImageRGBA8 image;
-        std::string error;
-        if (!loadImage(material.texture.imagePath, &image, &error))
-          throw SceneError(material.texture.loc, error);
-        found = imageLayer.emplace(material.texture.imagePath, uint32_t(images.size())).first;
-        images.push_back(std::move(image));
-      }
-      layer = found->second;
-    }
+    if (material.texture.kind == TextureKind::Image)
+      while (g.images[layer].path != material.texture.imagePath) ++layer;
     materialIndex[m] = uint32_t(g.materials.size());
     g.materials.push_back(packMaterial(material, layer));
     packedKinds |= 1u << uint32_t(material.texture.kind);
@@ -226,30 +260,7 @@ GpuScene buildGpuScene(const Scene& scene, uint32_t width, uint32_t height, bool
                         (1u << TEX_TURBULENCE) | (1u << TEX_DTURBULENCE)))
     fillNoiseTable(&g.noise);
 
-  // One sampler2DArray holds every image (lavapipe cannot index sampler arrays
-  // dynamically), so all layers share the largest width and height.
-  if (!images.empty()) {
-    for (const ImageRGBA8& image : images) {
-      g.imageWidth = std::max(g.imageWidth, image.width);
-      g.imageHeight = std::max(g.imageHeight, image.height);
-    }
-    g.imageLayers = int(images.size());
-    g.imageLevels = mipmaps ? mipLevelCount(g.imageWidth, g.imageHeight) : 1;
-    std::vector<std::vector<ImageRGBA8>> chains;
-    for (const ImageRGBA8& image : images) {
-      ImageRGBA8 level0 = resizeImage(image, g.imageWidth, g.imageHeight);
-      if (mipmaps)
-        chains.push_back(mipChain(std::move(level0)));
-      else
-        chains.push_back({std::move(level0)});
-      const ImageRGBA8& layer = chains.back()[0];
-      g.imagePixels.insert(g.imagePixels.end(), layer.pixels.begin(), layer.pixels.end());
-    }
-    for (int level = 1; level < g.imageLevels; ++level)
-      for (const std::vector<ImageRGBA8>& chain : chains)
-        g.imageMipPixels.insert(g.imageMipPixels.end(), chain[size_t(level)].pixels.begin(),
-                                chain[size_t(level)].pixels.end());
-  }
+  if (!g.images.empty()) fillImageLayers(g, mipmaps);
   return g;
 }
 

@@ -5,6 +5,7 @@
 #include "common.h"
 #include "image_io.h"
 #include "scene.h"
+#include "scene_images.h"
 
 #include <array>
 #include <cstdint>
@@ -55,7 +56,9 @@ struct GpuScene {
   gpu::NoiseTable noise{};
   SceneShape shape;  // the kinds in use and the counts: what the kernel is specialised to
   std::map<int, uint32_t> materialIndex;  // Scene material (-1: the default) -> index in materials
-  // Image textures in use, all resampled to one size: layer i is material imageLayer i.
+  // Image textures in use, all resampled to one size: layer i is material imageLayer i, from
+  // file images[i].
+  std::vector<SceneImage> images;
   int imageWidth = 1, imageHeight = 1, imageLayers = 0;
   std::vector<uint8_t> imagePixels;  // RGBA8 sRGB, layer after layer
   // Full mip chains (mipChain in image_io.h) for the filtered kernel: imageLevels levels,
@@ -69,9 +72,11 @@ struct GpuScene {
 // earth.jpg). allMaterials: pack every material the scene defines, not only those its objects
 // use, so that objects can switch material with packCamera alone (the viewer); shape
 // still holds only the kinds in use. Throws SceneError (with the texture's file location) if
-// an image cannot be loaded. width, height: output size in pixels.
+// an image cannot be loaded, or if the images' headers show that they would upload more than
+// maxImageMiB (scene_images.h): checked before any image is decoded, and each is decoded
+// straight into imagePixels when it has the array's size. width, height: output size in pixels.
 GpuScene buildGpuScene(const Scene& scene, uint32_t width, uint32_t height, bool mipmaps = true,
-                       bool allMaterials = false);
+                       bool allMaterials = false, uint32_t maxImageMiB = kDefaultMaxImageMiB);
 
 // Re-packs what depends on the camera and the output size (the frame, and spheres, planes
 // and lights, which are camera-relative) for a scene whose materials are unchanged: cheap,

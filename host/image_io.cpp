@@ -6,14 +6,12 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <deque>
 #include <stdexcept>
 
 #include <sys/stat.h>
 #include <unistd.h>
 
-#define STB_IMAGE_IMPLEMENTATION
-#define STBI_FAILURE_USERMSG
-#include <stb_image.h>
 #include <zlib.h>
 
 namespace {
@@ -39,35 +37,22 @@ unsigned char* deflateFast(unsigned char* data, int size, int* outSize, int /*st
 #define STB_IMAGE_RESIZE_IMPLEMENTATION
 #include <stb_image_resize.h>
 
-bool loadImage(const std::string& path, ImageRGBA8* image, std::string* error) {
-  int w = 0, h = 0, channels = 0;
-  stbi_uc* data = stbi_load(path.c_str(), &w, &h, &channels, 4);
-  if (!data) {
-    FILE* f = fopen(path.c_str(), "rb");
-    if (!f) {
-      *error = std::string("cannot open image '") + path + "': " + strerror(errno);
-    } else {
-      fclose(f);
-      *error = std::string("cannot decode image '") + path + "': " + stbi_failure_reason();
-    }
-    return false;
-  }
-  image->width = w;
-  image->height = h;
-  image->pixels.assign(data, data + size_t(w) * h * 4);
-  stbi_image_free(data);
-  return true;
-}
-
 ImageRGBA8 resizeImage(const ImageRGBA8& image, int width, int height) {
   if (image.width == width && image.height == height) return image;
   ImageRGBA8 out;
   out.width = width;
   out.height = height;
   out.pixels.resize(size_t(width) * height * 4);
-  stbir_resize_uint8_srgb(image.pixels.data(), image.width, image.height, 0, out.pixels.data(),
-                          width, height, 0, 4, 3, 0);
+  resizeImage(image, width, height, out.pixels.data());
   return out;
+}
+
+void resizeImage(const ImageRGBA8& image, int width, int height, uint8_t* out) {
+  if (image.width == width && image.height == height) {
+    std::copy(image.pixels.begin(), image.pixels.end(), out);
+    return;
+  }
+  stbir_resize_uint8_srgb(image.pixels.data(), image.width, image.height, 0, out, width, height, 0, 4, 3, 0);
 }
 
 namespace {
@@ -130,65 +115,95 @@ AxisWeights axisWeights(int from, int to) {
   return a;
 }
 
-// Linear RGBA floats, row 0 at the top.
-struct LinearImage {
-  int width = 0, height = 0;
-  std::vector<float> rgba;
+// One level of a mip chain made from the rows of the level below as they come, so that no
+// level is ever whole in float: each output texel is the same sum, in the same order, as a
+// whole-level reduction would compute. Dimensions halving exactly average 2x2 texels; others
+// use area weights (axisWeights), columns first, then rows.
+struct RowReducer {
+  int inWidth = 0, inHeight = 0, width = 0, height = 0;
+  bool even = false;
+  AxisWeights wx, wy;
+  std::vector<float> pairFirst;  // even: the first row of the current pair
+  std::vector<float> columns;    // weighted: the current input row reduced along x
+  std::deque<std::pair<int, std::vector<float>>> open;  // weighted: output rows being summed
+  int nextRow = 0, nextOpen = 0;
 };
 
-LinearImage downsample(const LinearImage& in, int width, int height) {
-  LinearImage out;
-  out.width = width;
-  out.height = height;
-  out.rgba.assign(size_t(width) * height * 4, 0.0f);
-  if (in.width == 2 * width && in.height == 2 * height) {  // even sizes: a plain 2x2 box
-    for (int y = 0; y < height; ++y) {
-      const float* r0 = &in.rgba[size_t(2 * y) * in.width * 4];
-      const float* r1 = r0 + size_t(in.width) * 4;
-      float* o = &out.rgba[size_t(y) * width * 4];
-      for (int x = 0; x < width; ++x)
-        for (int c = 0; c < 4; ++c) {
-          size_t a = size_t(2 * x) * 4 + c, b = a + 4;
-          o[size_t(x) * 4 + c] = 0.25f * ((r0[a] + r0[b]) + (r1[a] + r1[b]));
-        }
-    }
-    return out;
+RowReducer rowReducer(int inWidth, int inHeight, int width, int height) {
+  RowReducer r;
+  r.inWidth = inWidth;
+  r.inHeight = inHeight;
+  r.width = width;
+  r.height = height;
+  r.even = inWidth == 2 * width && inHeight == 2 * height;
+  if (!r.even) {
+    r.wx = axisWeights(inWidth, width);
+    r.wy = axisWeights(inHeight, height);
+    r.columns.resize(size_t(width) * 4);
   }
-  AxisWeights wx = axisWeights(in.width, width), wy = axisWeights(in.height, height);
-  // Columns first (width x in.height), then rows.
-  std::vector<float> tmp(size_t(width) * in.height * 4, 0.0f);
-  for (int y = 0; y < in.height; ++y)
-    for (int x = 0; x < width; ++x) {
-      float* o = &tmp[(size_t(y) * width + x) * 4];
-      for (int k = 0; k < wx.span; ++k) {
-        float w = wx.weights[size_t(x) * wx.span + k];
-        if (w == 0.0f) continue;
-        const float* p = &in.rgba[(size_t(y) * in.width + wx.first[size_t(x)] + k) * 4];
-        for (int c = 0; c < 4; ++c) o[c] += w * p[c];
-      }
-    }
-  for (int y = 0; y < height; ++y)
-    for (int k = 0; k < wy.span; ++k) {
-      float w = wy.weights[size_t(y) * wy.span + k];
-      if (w == 0.0f) continue;
-      const float* row = &tmp[size_t(wy.first[size_t(y)] + k) * width * 4];
-      float* o = &out.rgba[size_t(y) * width * 4];
-      for (size_t i = 0; i < size_t(width) * 4; ++i) o[i] += w * row[i];
-    }
-  return out;
+  return r;
 }
 
-ImageRGBA8 encodeLevel(const LinearImage& in) {
+void encodeRow(const float* rgba, int width, uint8_t* out) {
   static const SrgbEncoder encodeSrgbCode;
-  ImageRGBA8 out;
-  out.width = in.width;
-  out.height = in.height;
-  out.pixels.resize(in.rgba.size());
-  for (size_t i = 0; i < in.rgba.size(); i += 4) {
-    for (int c = 0; c < 3; ++c) out.pixels[i + c] = encodeSrgbCode(in.rgba[i + c]);
-    out.pixels[i + 3] = uint8_t(std::lround(std::min(std::max(in.rgba[i + 3], 0.0f), 1.0f) * 255.0f));
+  for (size_t i = 0; i < size_t(width) * 4; i += 4) {
+    for (int c = 0; c < 3; ++c) out[i + c] = encodeSrgbCode(rgba[i + c]);
+    out[i + 3] = uint8_t(std::lround(std::min(std::max(rgba[i + 3], 0.0f), 1.0f) * 255.0f));
   }
-  return out;
+}
+
+// The input row's sums along x (weighted reducers).
+void reduceColumns(RowReducer& r, const float* row) {
+  for (int x = 0; x < r.width; ++x) {
+    float* o = &r.columns[size_t(x) * 4];
+    std::fill(o, o + 4, 0.0f);
+    for (int k = 0; k < r.wx.span; ++k) {
+      float w = r.wx.weights[size_t(x) * r.wx.span + k];
+      if (w == 0.0f) continue;
+      const float* p = row + size_t(r.wx.first[size_t(x)] + k) * 4;
+      for (int c = 0; c < 4; ++c) o[c] += w * p[c];
+    }
+  }
+}
+
+// Feeds one row (linear RGBA floats) to level `l` of the chain; each finished output row is
+// encoded into out[l] and fed to the next level.
+void pushRow(std::vector<RowReducer>& chain, size_t l, const float* row, uint8_t* const* out) {
+  RowReducer& r = chain[l];
+  const int j = r.nextRow++;
+  auto emit = [&](int y, const float* texels) {
+    encodeRow(texels, r.width, out[l] + size_t(y) * r.width * 4);
+    if (l + 1 < chain.size()) pushRow(chain, l + 1, texels, out);
+  };
+  if (r.even) {
+    if (j % 2 == 0) {
+      r.pairFirst.assign(row, row + size_t(r.inWidth) * 4);
+      return;
+    }
+    std::vector<float> texels(size_t(r.width) * 4);
+    const float* r0 = r.pairFirst.data();
+    for (int x = 0; x < r.width; ++x)
+      for (int c = 0; c < 4; ++c) {
+        size_t a = size_t(2 * x) * 4 + c, b = a + 4;
+        texels[size_t(x) * 4 + c] = 0.25f * ((r0[a] + r0[b]) + (row[a] + row[b]));
+      }
+    emit(j / 2, texels.data());
+    return;
+  }
+  reduceColumns(r, row);
+  while (r.nextOpen < r.height && r.wy.first[size_t(r.nextOpen)] <= j)
+    r.open.emplace_back(r.nextOpen++, std::vector<float>(size_t(r.width) * 4, 0.0f));
+  for (auto& [y, sum] : r.open) {
+    int k = j - r.wy.first[size_t(y)];
+    float w = k < r.wy.span ? r.wy.weights[size_t(y) * r.wy.span + k] : 0.0f;
+    if (w == 0.0f) continue;
+    for (size_t i = 0; i < sum.size(); ++i) sum[i] += w * r.columns[i];
+  }
+  while (!r.open.empty() &&
+         (r.wy.first[size_t(r.open.front().first)] + r.wy.span - 1 <= j || j == r.inHeight - 1)) {
+    emit(r.open.front().first, r.open.front().second.data());
+    r.open.pop_front();
+  }
 }
 
 }  // namespace
@@ -202,44 +217,44 @@ int mipLevelCount(int width, int height) {
 std::vector<ImageRGBA8> mipChain(const ImageRGBA8& image) { return mipChain(ImageRGBA8(image)); }
 
 std::vector<ImageRGBA8> mipChain(ImageRGBA8&& level0) {
-  const int levels = mipLevelCount(level0.width, level0.height);
+  std::vector<ImageRGBA8> above = mipLevelsAbove(level0.pixels.data(), level0.width, level0.height);
   std::vector<ImageRGBA8> chain;
-  chain.reserve(size_t(levels));  // no reallocation: `image` stays valid
+  chain.reserve(above.size() + 1);
   chain.push_back(std::move(level0));
-  const ImageRGBA8& image = chain[0];
-  if (image.width <= 0 || image.height <= 0 || levels == 1) return chain;
-  const float* decode = srgbDecodeTable();
-  auto linear = [&](size_t i, int c) { return c < 3 ? decode[image.pixels[i + c]] : image.pixels[i + c] / 255.0f; };
-  LinearImage level;
-  int w1 = std::max(1, image.width >> 1), h1 = std::max(1, image.height >> 1);
-  if (image.width == 2 * w1 && image.height == 2 * h1) {
-    // Even sizes: level 1 straight from the bytes (no float copy of the large level 0).
-    level.width = w1;
-    level.height = h1;
-    level.rgba.resize(size_t(w1) * h1 * 4);
-    for (int y = 0; y < h1; ++y)
-      for (int x = 0; x < w1; ++x) {
-        size_t a = (size_t(2 * y) * image.width + 2 * x) * 4, b = a + 4;
-        size_t c = a + size_t(image.width) * 4, d = c + 4;
-        for (int k = 0; k < 4; ++k)
-          level.rgba[(size_t(y) * w1 + x) * 4 + k] =
-              0.25f * ((linear(a, k) + linear(b, k)) + (linear(c, k) + linear(d, k)));
-      }
-  } else {
-    LinearImage base;
-    base.width = image.width;
-    base.height = image.height;
-    base.rgba.resize(image.pixels.size());
-    for (size_t i = 0; i < image.pixels.size(); i += 4)
-      for (int k = 0; k < 4; ++k) base.rgba[i + k] = linear(i, k);
-    level = downsample(base, w1, h1);
-  }
-  chain.push_back(encodeLevel(level));
-  for (int i = 2; i < levels; ++i) {
-    level = downsample(level, std::max(1, image.width >> i), std::max(1, image.height >> i));
-    chain.push_back(encodeLevel(level));
-  }
+  for (ImageRGBA8& level : above) chain.push_back(std::move(level));
   return chain;
+}
+
+std::vector<ImageRGBA8> mipLevelsAbove(const uint8_t* pixels, int width, int height) {
+  std::vector<ImageRGBA8> chain;
+  std::vector<uint8_t*> out;
+  for (int l = 1; l < mipLevelCount(width, height); ++l) {
+    ImageRGBA8 level{std::max(1, width >> l), std::max(1, height >> l), {}};
+    level.pixels.resize(size_t(level.width) * level.height * 4);
+    chain.push_back(std::move(level));
+  }
+  for (ImageRGBA8& level : chain) out.push_back(level.pixels.data());
+  writeMipLevels(pixels, width, height, out.data());
+  return chain;
+}
+
+void writeMipLevels(const uint8_t* pixels, int width, int height, uint8_t* const* out) {
+  const int levels = mipLevelCount(width, height);
+  if (width <= 0 || height <= 0 || levels == 1) return;
+  std::vector<RowReducer> chain;
+  for (int l = 1; l < levels; ++l)
+    chain.push_back(rowReducer(std::max(1, width >> (l - 1)), std::max(1, height >> (l - 1)),
+                               std::max(1, width >> l), std::max(1, height >> l)));
+  const float* decode = srgbDecodeTable();
+  std::vector<float> row(size_t(width) * 4);
+  for (int y = 0; y < height; ++y) {
+    const uint8_t* p = pixels + size_t(y) * width * 4;
+    for (size_t i = 0; i < row.size(); i += 4) {
+      for (int c = 0; c < 3; ++c) row[i + c] = decode[p[i + c]];
+      row[i + 3] = p[i + 3] / 255.0f;
+    }
+    pushRow(chain, 0, row.data(), out);
+  }
 }
 
 double srgbToLinear(double c) {

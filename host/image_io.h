@@ -1,5 +1,6 @@
-// Image files and pixel conversions: PNG/JPEG decode, sRGB encode, PNG
-// encode, and image comparison for tests. No Vulkan.
+// Images in memory and pixel conversions: resampling, mip chains, sRGB encode, PNG encode,
+// and image comparison for tests (image_load.h reads image files; output_file.h writes them).
+// No Vulkan.
 #pragma once
 
 #include <cstdint>
@@ -12,11 +13,10 @@ struct ImageRGBA8 {
   std::vector<uint8_t> pixels;  // row 0 at the top, 4 bytes per pixel
 };
 
-// Decodes any format stb_image reads into RGBA8. False with *error set on failure.
-bool loadImage(const std::string& path, ImageRGBA8* image, std::string* error);
-
 // Resamples an sRGB-encoded image (filtering in linear light).
 ImageRGBA8 resizeImage(const ImageRGBA8& image, int width, int height);
+// The same, into `out` (width x height x 4 bytes).
+void resizeImage(const ImageRGBA8& image, int width, int height, uint8_t* out);
 
 // Number of levels of a full mip chain: floor(log2(max(width, height))) + 1.
 int mipLevelCount(int width, int height);
@@ -29,6 +29,12 @@ int mipLevelCount(int width, int height);
 // from the previous level's unrounded linear values (no 8-bit rounding builds up).
 std::vector<ImageRGBA8> mipChain(const ImageRGBA8& image);
 std::vector<ImageRGBA8> mipChain(ImageRGBA8&& image);  // moves the image into level 0
+// The chain without level 0, from level 0's texels (width x height x 4 bytes).
+std::vector<ImageRGBA8> mipLevelsAbove(const uint8_t* pixels, int width, int height);
+// The same levels written to out[0] (level 1), out[1] (level 2), ..., each max(1, width >> l) x
+// max(1, height >> l) x 4 bytes. Made row by row: besides the output, it holds a few rows of
+// floats per level, never a whole level.
+void writeMipLevels(const uint8_t* pixels, int width, int height, uint8_t* const* out);
 
 // Linear float RGBA (row 0 at the top) to sRGB-encoded RGBA8, clamped to [0, 1].
 // Non-finite channels become 0 and are counted in *nonFinite when given.

@@ -23,7 +23,8 @@ int runReference(const RenderOptions& options, const RenderJob& job, const Scene
                  double parseMs) {
   ReferenceImage reference;
   try {
-    reference = renderReference(scene, int(job.width), int(job.height), int(job.samplesPerSide));
+    reference = renderReference(scene, int(job.width), int(job.height), int(job.samplesPerSide), 0,
+                                options.maxImageMiB);
   } catch (const SceneError& e) {
     fprintf(stderr, "%s\n", e.what());
     return 2;

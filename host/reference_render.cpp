@@ -65,17 +65,18 @@ glm::dvec3 shadeReference(const Context& c, glm::dvec3 o, glm::dvec3 d) {
 
 }  // namespace
 
-std::map<std::string, ImageRGBA8> loadReferenceImages(const Scene& scene) {
+std::map<std::string, ImageRGBA8> loadReferenceImages(const Scene& scene, uint32_t maxImageMiB) {
+  std::vector<int> used;
+  for (const Sphere& s : scene.spheres) used.push_back(s.material);
+  for (const Plane& p : scene.planes) used.push_back(p.material);
   std::map<std::string, ImageRGBA8> images;
-  auto load = [&](int index) {
-    if (index < 0) return;
-    const TextureDesc& t = scene.materials[size_t(index)].texture;
-    if (t.kind != TextureKind::Image || images.count(t.imagePath)) return;
-    std::string error;
-    if (!loadImage(t.imagePath, &images[t.imagePath], &error)) throw SceneError(t.loc, error);
-  };
-  for (const Sphere& s : scene.spheres) load(s.material);
-  for (const Plane& p : scene.planes) load(p.material);
+  for (const SceneImage& probed : probeSceneImages(scene, used, false, maxImageMiB)) {
+    ImageRGBA8& image = images[probed.path];
+    image.pixels.resize(size_t(probed.header.width) * probed.header.height * 4);
+    decodeSceneImage(probed, image.pixels.data());
+    image.width = probed.header.width;
+    image.height = probed.header.height;
+  }
   return images;
 }
 
@@ -97,8 +98,9 @@ glm::dvec3 sampleImageReference(const ImageRGBA8& image, glm::dvec2 uv, bool cla
          (texel(x0, y0 + 1) * (1 - fx) + texel(x0 + 1, y0 + 1) * fx) * fy;
 }
 
-ReferenceImage renderReference(const Scene& scene, int width, int height, int samplesPerSide, int threads) {
-  std::map<std::string, ImageRGBA8> images = loadReferenceImages(scene);
+ReferenceImage renderReference(const Scene& scene, int width, int height, int samplesPerSide, int threads,
+                               uint32_t maxImageMiB) {
+  std::map<std::string, ImageRGBA8> images = loadReferenceImages(scene, maxImageMiB);
   Context context{scene, images, defaultMaterial()};
   ReferenceImage out;
   out.width = width;

@@ -6,6 +6,7 @@
 
 #include "image_io.h"
 #include "scene.h"
+#include "scene_images.h"
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -22,16 +23,20 @@ struct ReferenceImage {
 };
 
 // Decoded image textures of the materials objects use, by resolved path. Throws SceneError
-// at the texture's `file` location when one cannot be loaded.
-std::map<std::string, ImageRGBA8> loadReferenceImages(const Scene& scene);
+// at the texture's `file` location when one cannot be loaded, or, before decoding any, when
+// their headers show more than maxImageMiB for the GPU's texture array (as a point-filtered
+// GPU render counts it: probeSceneImages), so that both renderers accept the same scenes.
+std::map<std::string, ImageRGBA8> loadReferenceImages(const Scene& scene,
+                                                      uint32_t maxImageMiB = kDefaultMaxImageMiB);
 
 // Bilinear sample in linear light at column 1 - u, row 1 - v (docs/textures.md), u
 // repeating; v repeating too, or clamped to the texel centres when clampV (spheres).
 glm::dvec3 sampleImageReference(const ImageRGBA8& image, glm::dvec2 uv, bool clampV);
 
 // Renders with samplesPerSide^2 samples per pixel on `threads` threads (0: all cores).
+// maxImageMiB: as loadReferenceImages.
 ReferenceImage renderReference(const Scene& scene, int width, int height, int samplesPerSide,
-                               int threads = 0);
+                               int threads = 0, uint32_t maxImageMiB = kDefaultMaxImageMiB);
 
 // Root-mean-square difference of the RGB channels of linear RGBA floats (a GPU image) from
 // the reference, over every pixel, or over the pixels flagged in `mask` (0 if none are).

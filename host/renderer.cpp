@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -197,6 +198,10 @@ void destroyRenderer(Renderer& r) {
 }
 
 void uploadScene(Renderer& r, const GpuScene& s) {
+  // Checked before anything is replaced: the viewer keeps its last scene when this throws.
+  const VkPhysicalDeviceLimits& limits = r.device.properties.limits;
+  std::string over = imagesOverDeviceLimits(s.images, limits.maxImageDimension2D, limits.maxImageArrayLayers);
+  if (!over.empty()) throw std::runtime_error(over);
   VK_CHECK(vkDeviceWaitIdle(r.device.device));
   // Whole blocks (buildGpuScene keeps to the MAX_* counts); the noise table even when unused.
   replaceUniformBuffer(r, r.frame, &s.frame, 1);

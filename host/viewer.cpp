@@ -18,6 +18,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -64,6 +65,14 @@ struct ViewerState {
   int planeMaterial = -1;    // index into kCourseMaterials for P cycling
   std::string message;      // shown in the title (e.g. a material the scene does not define)
   std::optional<Clock::time_point> switchedAt;  // a material key, until its frame is shown
+  std::optional<GpuScene> reloaded;  // a reloaded scene's GPU data, its images checked and decoded
+};
+
+// What a reloaded scene's images must pass before it replaces the scene on screen.
+struct ImageLimits {
+  bool mipmaps = false;  // mip chains (the filtered kernel) count in the budget
+  uint32_t maxImageMiB = kDefaultMaxImageMiB;
+  uint32_t maxImageDimension2D = 0, maxImageArrayLayers = 0;  // the device's
 };
 
 int materialIndex(const Scene& scene, const char* name) {
@@ -168,22 +177,30 @@ std::vector<std::filesystem::file_time_type> fileTimes(const Scene& scene) {
   return times;
 }
 
-// Re-parses the scene when one of its files changed. A parse error is printed with its
-// file:line:col and the last good scene stays.
+// Re-parses the scene when one of its files changed, and loads its images. An error (a parse
+// error with its file:line:col, an image refused or over the device's limits) is printed and
+// the last good scene stays.
 void reloadIfChanged(ViewerState& state, const std::string& path, const ReadPolicy& policy,
-                     std::vector<std::filesystem::file_time_type>& times) {
+                     std::vector<std::filesystem::file_time_type>& times, const ImageLimits& limits) {
   std::vector<std::filesystem::file_time_type> now = fileTimes(state.scene);
   if (now == times) return;
   times = now;
   try {
     Scene scene = parseSceneFile(path, policy);
     times = fileTimes(scene);
+    GpuScene gpuScene = buildGpuScene(scene, 1, 1, limits.mipmaps, true, limits.maxImageMiB);
+    std::string over = imagesOverDeviceLimits(gpuScene.images, limits.maxImageDimension2D, limits.maxImageArrayLayers);
+    if (!over.empty()) throw std::runtime_error(over);
     state.scene = std::move(scene);
+    state.reloaded = std::move(gpuScene);
     state.orbit = orbitOf(state.scene.camera);
     state.dirty = true;
     state.message = "reloaded";
   } catch (const SceneError& e) {
     fprintf(stderr, "%s\n", e.what());
+    state.message = "scene error, see the terminal";
+  } catch (const std::runtime_error& e) {
+    fprintf(stderr, "raytex: %s\n", e.what());
     state.message = "scene error, see the terminal";
   }
 }
@@ -323,7 +340,13 @@ int runViewer(const RenderOptions& options) {
         if (!gpuScene.materialIndex.count(o.material)) state.dirty = true;
       if (state.dirty) {  // the size or the scene file changed: everything
         bool images = job.filterBox;  // mip chains only for the filtered kernel
-        gpuScene = buildGpuScene(state.scene, size.width, size.height, images, true);
+        if (state.reloaded) {
+          gpuScene = std::move(*state.reloaded);
+          state.reloaded.reset();
+          packCamera(gpuScene, state.scene, size.width, size.height);
+        } else {
+          gpuScene = buildGpuScene(state.scene, size.width, size.height, images, true, options.maxImageMiB);
+        }
         uploadScene(renderer, gpuScene);
         state.dirty = state.cameraMoved = false;
         samples = 0;
@@ -369,7 +392,9 @@ int runViewer(const RenderOptions& options) {
       if (options.frames && stats.frameMs.size() >= options.frames) break;
       auto now = Clock::now();
       if (now - lastTitle > std::chrono::milliseconds(250)) {  // also the reload poll
-        reloadIfChanged(state, options.scene, ReadPolicy{options.allowRead}, times);
+        const VkPhysicalDeviceLimits& device = renderer.device.properties.limits;
+        reloadIfChanged(state, options.scene, ReadPolicy{options.allowRead}, times,
+                        {job.filterBox, options.maxImageMiB, device.maxImageDimension2D, device.maxImageArrayLayers});
         double frameMs = stats.frameMs.empty() ? 0.0 : stats.frameMs.back();
         glfwSetWindowTitle(window.window, title(state, samples, target, frameMs, renderer.lastFrameMs).c_str());
         lastTitle = now;

@@ -191,5 +191,38 @@ for n in 54 1; do
 done
 check loop-limit-per-sample cmp -s "$tmp/lights54.png" "$tmp/lights1.png"
 
+# Image files are checked from their headers before anything is decoded: a budget of 1 MiB
+# refuses earth.jpg (2048x1024, 8 MiB) on every command that loads images, at its `file` value.
+printf 'material e { texture = image { file = "%s/textures/earth.jpg"; }; }\nsphere { radius = 1; e; }\n' \
+  "$src" >"$tmp/earth.cfg"
+for command in render "render --reference" bench; do
+  # shellcheck disable=SC2086  # the command's words
+  expect "image-budget-${command// /-}" 2 "^$tmp/earth.cfg:1:39: image '$src/textures/earth.jpg' \(2048x1024\) brings \
+the scene's images to 8.0 MiB on the GPU \(1 layer of 2048x1024, 4 bytes a texel\), over the budget of 1 MiB \
+\(--max-image-mib N raises it\)$" -- "$raytex" $command "$tmp/earth.cfg" --max-image-mib 1 -o "$tmp/budget.png"
+done
+check image-budget-no-output test ! -e "$tmp/budget.png"
+# An image path that is a FIFO is refused at once (opening it would wait for a writer).
+if mkfifo "$tmp/pipe.png"; then
+  printf 'material e { texture = image { file = "pipe.png"; }; }\nsphere { radius = 1; e; }\n' >"$tmp/fifo.cfg"
+  expect image-fifo 2 "^$tmp/fifo.cfg:1:39: cannot open image '$tmp/pipe.png': not a regular file$" -- \
+    timeout 10 "$raytex" render "$tmp/fifo.cfg" -o "$tmp/fifo.png"
+else
+  echo "skip image-fifo: mkfifo failed"
+fi
+
+# Loading holds at most 1.5 times an image's decoded bytes: the 4096x4096 render above as a
+# texture (64 MiB decoded, 85.3 MiB with mip levels) loads within 96 MiB more than the program's
+# 32 MiB of address space. With no Vulkan driver only parsing and loading run, so the run ends
+# with the no-driver error, not out of memory. (Not under ASan: see out-of-memory above.)
+if [ "${RAYTEX_SANITIZED:-0}" != 1 ] && [ -e "$tmp/banded.png" ]; then
+  printf 'material e { texture = image { file = "banded.png"; }; }\nsphere { radius = 1; e; }\n' >"$tmp/big.cfg"
+  for filter in point box; do
+    expect "image-load-memory-$filter" 1 '^raytex: no Vulkan device found' -- env VK_ICD_FILENAMES=/nonexistent.json \
+      bash -c 'ulimit -v $((32768 + 98304)); exec "$0" render "$1" -o "$2" --filter "$3"' \
+      "$raytex" "$tmp/big.cfg" "$tmp/big.png" "$filter"
+  done
+fi
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

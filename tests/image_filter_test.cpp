@@ -4,6 +4,7 @@
 // a Vulkan device (lavapipe in CI) with validation on; every image is checked for NaN/inf.
 #include "gpu_fixture.h"
 #include "output_file.h"
+#include "image_load.h"
 #include "parser.h"
 #include "reference.h"
 #include "reference_render.h"

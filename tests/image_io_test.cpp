@@ -1,5 +1,6 @@
 #include "image_io.h"
 #include "output_file.h"
+#include "image_load.h"
 
 #include <gtest/gtest.h>
 

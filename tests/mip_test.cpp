@@ -2,6 +2,7 @@
 // the 1x1 last level, and their packing for the GPU (buildGpuScene). No Vulkan device.
 #include "gpu_scene.h"
 #include "image_io.h"
+#include "image_load.h"
 #include "parser.h"
 
 #include <gtest/gtest.h>

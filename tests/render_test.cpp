@@ -7,6 +7,7 @@
 #include "gpu_scene.h"
 #include "image_io.h"
 #include "output_file.h"
+#include "image_load.h"
 #include "parser.h"
 #include "reference.h"
 #include "reference_render.h"

@@ -121,6 +121,15 @@ check reload-error-message grep -q "textures.cfg:[0-9]*:5: unknown key 'radiuss'
 check reload-keeps-running kill -0 "$viewer"
 sed -i 's|^    radiuss = 2.0;|    radius = 2.0;|' "$tmp/scenes/textures.cfg"
 check reload-recovers waitTitle 'sphere: aWood .*reloaded'
+# An image the reloaded scene names that cannot be decoded: printed, and the last good scene
+# stays (every material the scene defines is loaded, so the sphere's aWood does not hide it).
+sed -i "s|\"../textures/earth.jpg\"|\"$src/tests/malformed/images/truncated.png\"|" "$tmp/scenes/texture_include.cfg"
+check reload-image-error-title waitTitle 'sphere: aWood .*scene error'
+check reload-image-error-message grep -q "texture_include.cfg:[0-9]*:[0-9]*: cannot decode image '.*truncated.png'" \
+  "$tmp/reload.log"
+check reload-image-keeps-running kill -0 "$viewer"
+sed -i "s|\"$src/tests/malformed/images/truncated.png\"|\"../textures/earth.jpg\"|" "$tmp/scenes/texture_include.cfg"
+check reload-image-recovers waitTitle 'sphere: aWood .*reloaded'
 xdotool key --window "$wid" Escape
 wait "$viewer"
 check reload-clean-exit test $? -eq 0

@@ -1,0 +1,78 @@
+#include "scene_images.h"
+
+#include <algorithm>
+#include <cstdio>
+
+namespace {
+
+std::string sizeText(const ImageHeader& h) { return std::to_string(h.width) + "x" + std::to_string(h.height); }
+
+std::string mibText(uint64_t bytes) {
+  char text[32];
+  snprintf(text, sizeof(text), "%.1f", double(bytes) / (1024.0 * 1024.0));
+  return text;
+}
+
+void checkBudget(const std::vector<SceneImage>& images, bool mipmaps, uint32_t maxImageMiB) {
+  const uint64_t bytes = imageUploadBytes(images, mipmaps);
+  if (bytes <= uint64_t(maxImageMiB) * 1024 * 1024) return;
+  const SceneImage& last = images.back();
+  int width = 0, height = 0;
+  for (const SceneImage& i : images) {
+    width = std::max(width, i.header.width);
+    height = std::max(height, i.header.height);
+  }
+  throw SceneError(last.loc, "image '" + last.path + "' (" + sizeText(last.header) + ") brings the scene's images to " +
+                                 mibText(bytes) + " MiB on the GPU (" + std::to_string(images.size()) +
+                                 (images.size() == 1 ? " layer of " : " layers of ") + std::to_string(width) + "x" + std::to_string(height) +
+                                 (mipmaps ? ", 4 bytes a texel, with mip levels" : ", 4 bytes a texel") +
+                                 "), over the budget of " + std::to_string(maxImageMiB) +
+                                 " MiB (--max-image-mib N raises it)");
+}
+
+}  // namespace
+
+uint64_t imageUploadBytes(const std::vector<SceneImage>& images, bool mipmaps) {
+  uint64_t width = 0, height = 0;
+  for (const SceneImage& i : images) {
+    width = std::max(width, uint64_t(i.header.width));
+    height = std::max(height, uint64_t(i.header.height));
+  }
+  const uint64_t level0 = uint64_t(images.size()) * width * height * 4;
+  return mipmaps ? level0 + level0 / 3 : level0;
+}
+
+std::vector<SceneImage> probeSceneImages(const Scene& scene, const std::vector<int>& materials, bool mipmaps,
+                                         uint32_t maxImageMiB) {
+  std::vector<SceneImage> images;
+  for (int m : materials) {
+    if (m < 0) continue;
+    const TextureDesc& t = scene.materials[size_t(m)].texture;
+    if (t.kind != TextureKind::Image) continue;
+    auto same = [&](const SceneImage& i) { return i.path == t.imagePath; };
+    if (std::find_if(images.begin(), images.end(), same) != images.end()) continue;
+    SceneImage image{t.imagePath, t.loc, {}};
+    std::string error;
+    if (!probeImage(image.path, &image.header, &error)) throw SceneError(t.loc, error);
+    images.push_back(std::move(image));
+    checkBudget(images, mipmaps, maxImageMiB);
+  }
+  return images;
+}
+
+void decodeSceneImage(const SceneImage& image, uint8_t* rgba) {
+  std::string error;
+  if (!decodeImage(image.path, image.header, rgba, &error)) throw SceneError(image.loc, error);
+}
+
+std::string imagesOverDeviceLimits(const std::vector<SceneImage>& images, uint32_t maxImageDimension2D,
+                                   uint32_t maxImageArrayLayers) {
+  if (images.size() > maxImageArrayLayers)
+    return "the scene uses " + std::to_string(images.size()) + " images; the device holds at most " +
+           std::to_string(maxImageArrayLayers) + " (maxImageArrayLayers)";
+  for (const SceneImage& i : images)
+    if (uint32_t(i.header.width) > maxImageDimension2D || uint32_t(i.header.height) > maxImageDimension2D)
+      return "image '" + i.path + "' is " + sizeText(i.header) + ": the device's images are at most " +
+             std::to_string(maxImageDimension2D) + " a side (maxImageDimension2D)";
+  return "";
+}

@@ -1,0 +1,40 @@
+// The image files a scene's materials use, checked from their headers alone before any is
+// decoded: each readable as PNG or JPEG and at most kMaxImageFileSide a side, and the texture
+// array they make on the GPU within a budget. No Vulkan.
+#pragma once
+
+#include "image_load.h"
+#include "scene.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+// Budget of image texture bytes uploaded, in MiB (--max-image-mib).
+constexpr uint32_t kDefaultMaxImageMiB = 512;
+
+struct SceneImage {
+  std::string path;  // resolved as the scene gives it (TextureDesc::imagePath)
+  FileLoc loc;       // the texture's `file` value
+  ImageHeader header;
+};
+
+// Bytes of the texture array these images make: one layer each at the largest width and the
+// largest height, 4 bytes a texel, and a third more for mip levels when `mipmaps`.
+uint64_t imageUploadBytes(const std::vector<SceneImage>& images, bool mipmaps);
+
+// The image files of `materials` (indices into scene.materials; -1, the default material, and
+// non-image textures skipped; each file once), in order of first use, with their headers.
+// Throws SceneError at the texture's location for a file that cannot be probed, and at the
+// first image that brings imageUploadBytes over maxImageMiB.
+std::vector<SceneImage> probeSceneImages(const Scene& scene, const std::vector<int>& materials, bool mipmaps,
+                                         uint32_t maxImageMiB);
+
+// Decodes the image into rgba (its header's size, 4 bytes a texel). Throws SceneError at its
+// location when the file is corrupt, truncated or changed since it was probed.
+void decodeSceneImage(const SceneImage& image, uint8_t* rgba);
+
+// Empty when the texture array of these images fits a device's limits; otherwise one line
+// naming the image over them.
+std::string imagesOverDeviceLimits(const std::vector<SceneImage>& images, uint32_t maxImageDimension2D,
+                                   uint32_t maxImageArrayLayers);

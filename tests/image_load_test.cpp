@@ -1,0 +1,260 @@
+// Image files read before they are trusted (image_load.h, scene_images.h): only PNG and JPEG,
+// named for what they hold; sizes from the header checked before any decoding; corrupt and
+// truncated files refused; paths that are not regular files refused without blocking. The
+// hostile files are those of the malformed corpus (tests/malformed/images/make_hostile.py).
+#include "gpu_scene.h"
+#include "image_io.h"
+#include "image_load.h"
+#include "parser.h"
+#include "reference_render.h"
+#include "scene_images.h"
+
+#include <gtest/gtest.h>
+#include <zlib.h>
+
+#include <sys/stat.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <future>
+#include <thread>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string kSourceDir = RAYTEX_SOURCE_DIR;
+const std::string kHostile = kSourceDir + "/tests/malformed/images/";
+
+fs::path tempDir(const std::string& name) {
+  fs::path dir = fs::temp_directory_path() / ("raytex_image_load_" + name);
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+std::string loadError(const std::string& path) {
+  ImageRGBA8 image;
+  std::string error;
+  EXPECT_FALSE(loadImage(path, &image, &error)) << path << " was decoded as " << image.width << "x" << image.height;
+  EXPECT_TRUE(image.pixels.empty()) << path;
+  return error;
+}
+
+void writeBytes(const fs::path& path, const std::string& bytes) { std::ofstream(path, std::ios::binary) << bytes; }
+
+std::string readBytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+// A PNG with 8-bit samples, each row given without its filter byte.
+std::string pngFile(int width, int height, int colorType, const std::string& pixels, const std::string& plte = "",
+                    const std::string& trns = "") {
+  auto be32 = [](uint32_t v) {
+    return std::string{char(v >> 24), char(v >> 16), char(v >> 8), char(v)};
+  };
+  auto chunk = [&](const std::string& kind, const std::string& body) {
+    std::string data = kind + body;
+    uint32_t crc = uint32_t(crc32(0, reinterpret_cast<const Bytef*>(data.data()), uInt(data.size())));
+    return be32(uint32_t(body.size())) + data + be32(crc);
+  };
+  std::string raw;
+  size_t rowBytes = pixels.size() / size_t(height);
+  for (int y = 0; y < height; ++y) raw += '\0' + pixels.substr(size_t(y) * rowBytes, rowBytes);
+  uLongf size = compressBound(uLong(raw.size()));
+  std::string packed(size, '\0');
+  compress(reinterpret_cast<Bytef*>(packed.data()), &size, reinterpret_cast<const Bytef*>(raw.data()), uLong(raw.size()));
+  packed.resize(size);
+  std::string ihdr = be32(uint32_t(width)) + be32(uint32_t(height)) + std::string{8, char(colorType), 0, 0, 0};
+  std::string out = "\x89PNG\r\n\x1a\n" + chunk("IHDR", ihdr);
+  if (!plte.empty()) out += chunk("PLTE", plte);
+  if (!trns.empty()) out += chunk("tRNS", trns);
+  return out + chunk("IDAT", packed) + chunk("IEND", "");
+}
+
+TEST(ImageLoad, OtherFormatsAreRefusedByName) {
+  EXPECT_NE(loadError(kHostile + "canvas-16384.gif").find("is a GIF image: raytex reads PNG and JPEG"), std::string::npos);
+  EXPECT_NE(loadError(kHostile + "header-only.ppm").find("is a PPM image"), std::string::npos);
+  EXPECT_NE(loadError(kHostile + "header-only.bmp").find("is a BMP image"), std::string::npos);
+  EXPECT_NE(loadError(kHostile + "header-only.tga").find("is not named .png, .jpg or .jpeg"), std::string::npos);
+  // The same GIF under a PNG name: the content decides, and it is named.
+  fs::path dir = tempDir("formats");
+  fs::copy_file(kHostile + "canvas-16384.gif", dir / "canvas.png");
+  EXPECT_NE(loadError((dir / "canvas.png").string()).find("is a GIF image"), std::string::npos);
+}
+
+TEST(ImageLoad, ContentMustMatchTheExtension) {
+  EXPECT_NE(loadError(kHostile + "tga-named.png").find("'" + kHostile + "tga-named.png': not a PNG file"),
+            std::string::npos);
+  EXPECT_NE(loadError(kHostile + "jpeg-named.png").find("is a JPEG image named .png"), std::string::npos);
+  fs::path dir = tempDir("mismatch");
+  fs::copy_file(kSourceDir + "/textures/uv_grid.png", dir / "grid.jpg");
+  EXPECT_NE(loadError((dir / "grid.jpg").string()).find("is a PNG image named .jpg"), std::string::npos);
+}
+
+TEST(ImageLoad, ExtensionsInAnyCase) {
+  fs::path dir = tempDir("case");
+  fs::copy_file(kSourceDir + "/textures/uv_grid.png", dir / "GRID.PNG");
+  fs::copy_file(kSourceDir + "/textures/earth.jpg", dir / "earth.JPEG");
+  fs::copy_file(kSourceDir + "/textures/earth.jpg", dir / "earth.Jpg");
+  for (const char* name : {"GRID.PNG", "earth.JPEG", "earth.Jpg"}) {
+    ImageRGBA8 image;
+    std::string error;
+    EXPECT_TRUE(loadImage((dir / name).string(), &image, &error)) << error;
+    EXPECT_EQ(image.pixels.size(), size_t(image.width) * image.height * 4) << name;
+  }
+}
+
+TEST(ImageLoad, ProbeReadsTheHeader) {
+  ImageHeader h;
+  std::string error;
+  ASSERT_TRUE(probeImage(kSourceDir + "/textures/earth.jpg", &h, &error)) << error;
+  EXPECT_EQ(h.width, 2048);
+  EXPECT_EQ(h.height, 1024);
+  EXPECT_EQ(h.format, ImageFormat::Jpeg);
+  ASSERT_TRUE(probeImage(kSourceDir + "/textures/uv_grid.png", &h, &error)) << error;
+  EXPECT_EQ(h.width, 512);
+  EXPECT_EQ(h.height, 256);
+  EXPECT_EQ(h.format, ImageFormat::Png);
+}
+
+// A side over 16384 is refused from the header (the file is 96 bytes); 16384 is accepted.
+TEST(ImageLoad, SideOver16384IsRefusedFromTheHeader) {
+  ImageHeader h;
+  std::string error;
+  EXPECT_FALSE(probeImage(kHostile + "wide-16385.png", &h, &error));
+  EXPECT_NE(error.find("is 16385x1: raytex reads images of at most 16384 a side"), std::string::npos) << error;
+  EXPECT_TRUE(probeImage(kHostile + "wide-16384.png", &h, &error)) << error;
+  EXPECT_EQ(h.width, 16384);
+}
+
+// libpng maps an index past the palette to whatever follows it in memory (stb_image did the
+// same with uninitialised stack memory, so renders differed run to run): refused.
+TEST(ImageLoad, PaletteIndexPastThePaletteIsRefused) {
+  std::string error = loadError(kHostile + "palette-out-of-range.png");
+  EXPECT_NE(error.find("pixel (2, 0) uses colour 2 of a palette of 2"), std::string::npos) << error;
+}
+
+// Valid palette images expand to the palette's colours, tRNS giving alpha (255 past its end),
+// at every bit depth's byte layout (8 bits here).
+TEST(ImageLoad, PaletteExpandsWithTransparency) {
+  fs::path dir = tempDir("palette");
+  writeBytes(dir / "p.png", pngFile(3, 2, 3, std::string{0, 1, 2, 2, 1, 0},
+                                    std::string("\xff\x00\x00\x00\xff\x00\x00\x00\xff", 9),
+                                    std::string("\x80", 1)));
+  ImageRGBA8 image;
+  std::string error;
+  ASSERT_TRUE(loadImage((dir / "p.png").string(), &image, &error)) << error;
+  std::vector<uint8_t> want = {255, 0, 0, 128, 0, 255, 0, 255, 0, 0, 255, 255,
+                               0,   0, 255, 255, 0, 255, 0, 255, 255, 0, 0, 128};
+  EXPECT_EQ(image.pixels, want);
+}
+
+TEST(ImageLoad, GrayAndRgbBecomeOpaqueRgba) {
+  fs::path dir = tempDir("gray");
+  writeBytes(dir / "g.png", pngFile(2, 1, 0, std::string{10, char(200)}));
+  writeBytes(dir / "c.png", pngFile(1, 1, 2, std::string{1, 2, 3}));
+  ImageRGBA8 image;
+  std::string error;
+  ASSERT_TRUE(loadImage((dir / "g.png").string(), &image, &error)) << error;
+  EXPECT_EQ(image.pixels, (std::vector<uint8_t>{10, 10, 10, 255, 200, 200, 200, 255}));
+  ASSERT_TRUE(loadImage((dir / "c.png").string(), &image, &error)) << error;
+  EXPECT_EQ(image.pixels, (std::vector<uint8_t>{1, 2, 3, 255}));
+}
+
+// libjpeg-turbo only warns on a truncated file (and decodes grey for the rest): a warning is an
+// error here, and nothing is printed by the library.
+TEST(ImageLoad, TruncatedJpegIsRefused) {
+  EXPECT_NE(loadError(kHostile + "truncated.jpg").find("Premature end of JPEG file"), std::string::npos);
+}
+
+// Every cut of a PNG before its IEND is refused (the last 12 bytes are the IEND chunk).
+TEST(ImageLoad, TruncatedPngIsRefusedAtEveryLength) {
+  std::string png = readBytes(kSourceDir + "/textures/uv_grid.png");
+  fs::path dir = tempDir("cut");
+  for (size_t length : {size_t(0), size_t(8), size_t(30), size_t(100), png.size() / 2, png.size() - 13, png.size() - 1}) {
+    writeBytes(dir / "cut.png", png.substr(0, length));
+    ImageRGBA8 image;
+    std::string error;
+    EXPECT_FALSE(loadImage((dir / "cut.png").string(), &image, &error)) << length << " bytes";
+  }
+}
+
+// A FIFO (or any non-regular file) as an image is refused at once: opening it for reading would
+// block until a writer came.
+TEST(ImageLoad, FifoIsRefusedWithoutBlocking) {
+  fs::path dir = tempDir("fifo");
+  std::string fifo = (dir / "pipe.png").string();
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+  auto result = std::make_shared<std::promise<std::string>>();
+  std::future<std::string> error = result->get_future();
+  std::thread([fifo, result] {
+    ImageRGBA8 image;
+    std::string message;
+    loadImage(fifo, &image, &message);
+    result->set_value(message);
+  }).detach();
+  ASSERT_EQ(error.wait_for(std::chrono::seconds(5)), std::future_status::ready) << "loadImage blocked on a FIFO";
+  EXPECT_NE(error.get().find("not a regular file"), std::string::npos);
+  EXPECT_NE(loadError(dir.string() + "/").find("not a regular file"), std::string::npos);
+}
+
+Scene wideAndTallScene() { return parseSceneFile(kSourceDir + "/tests/malformed/image-wide-and-tall-over-budget.cfg"); }
+
+// A 16384x1 and a 1x16384 PNG (208 bytes) would make a 16384x16384 array of two layers, 2 GiB:
+// refused from their headers, at the second image's `file` value, before anything is decoded.
+TEST(SceneImages, WideAndTallImagesOverTheBudgetAreRefusedBeforeDecoding) {
+  Scene scene = wideAndTallScene();
+  try {
+    buildGpuScene(scene, 8, 8, false);
+    FAIL() << "expected a SceneError";
+  } catch (const SceneError& e) {
+    EXPECT_EQ(e.loc.line, 4);
+    EXPECT_EQ(e.loc.column, 42);
+    std::string what = e.what();
+    EXPECT_NE(what.find("'" + kSourceDir + "/tests/malformed/images/tall-16384.png' (1x16384) brings the scene's "
+                        "images to 2048.0 MiB on the GPU (2 layers of 16384x16384"),
+              std::string::npos)
+        << what;
+    EXPECT_NE(what.find("over the budget of 512 MiB (--max-image-mib N raises it)"), std::string::npos) << what;
+  }
+  EXPECT_THROW(loadReferenceImages(scene), SceneError);  // --reference: the same check
+}
+
+Scene earthAndGridScene() {
+  return parseSceneText(
+      "material a { texture = image { file = \"../textures/earth.jpg\"; }; }\n"
+      "material b { texture = image { file = \"../textures/uv_grid.png\"; }; }\n"
+      "sphere { center = (0, 0, 0); radius = 1; a; }\n"
+      "sphere { center = (3, 0, 0); radius = 1; b; }\n",
+      kSourceDir + "/scenes/budget_test.cfg");
+}
+
+// The count is layers x largest width x largest height x 4, a third more with mip levels:
+// earth.jpg (2048x1024) and uv_grid.png (512x256) make 16 MiB, 21.3 MiB with mip levels.
+TEST(SceneImages, BudgetCountsWhatIsUploaded) {
+  Scene scene = earthAndGridScene();
+  EXPECT_EQ(imageUploadBytes(probeSceneImages(scene, {0, 1}, false, 16), false), uint64_t(16) << 20);
+  EXPECT_NO_THROW(buildGpuScene(scene, 8, 8, false, false, 16));
+  EXPECT_THROW(buildGpuScene(scene, 8, 8, true, false, 21), SceneError);
+  EXPECT_NO_THROW(buildGpuScene(scene, 8, 8, true, false, 22));
+  EXPECT_THROW(buildGpuScene(scene, 8, 8, false, false, 15), SceneError);
+  EXPECT_THROW(loadReferenceImages(scene, 15), SceneError);
+  EXPECT_EQ(loadReferenceImages(scene, 16).size(), size_t(2));
+}
+
+// After the device is created: an image over its maxImageDimension2D (16384 on lavapipe, so
+// the header check stops larger ones first) is named, and uploadScene throws it (exit 1).
+TEST(SceneImages, DeviceLimitsNameTheImageOverThem) {
+  GpuScene g = buildGpuScene(earthAndGridScene(), 8, 8, false);
+  EXPECT_EQ(imagesOverDeviceLimits(g.images, 2048, 2), "");
+  std::string over = imagesOverDeviceLimits(g.images, 1024, 2);
+  EXPECT_NE(over.find("earth.jpg' is 2048x1024: the device's images are at most 1024 a side (maxImageDimension2D)"),
+            std::string::npos)
+      << over;
+  EXPECT_NE(imagesOverDeviceLimits(g.images, 2048, 1).find("maxImageArrayLayers"), std::string::npos);
+}
+
+}  // namespace
