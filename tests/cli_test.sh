@@ -3,33 +3,7 @@
 # input), one-line errors, file:line:col for scenes, atomic output.
 # Usage: cli_test.sh RAYTEX SOURCE_DIR
 set -u
-raytex=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
-src=$(cd "$2" && pwd)  # both absolute: some checks run in other directories
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-passed=0
-failed=0
-
-# expect NAME CODE PATTERN -- command...: exit code CODE and stderr+stdout matching PATTERN.
-expect() {
-  local name=$1 code=$2 pattern=$3
-  shift 4
-  local out rc
-  out=$("$@" 2>&1)
-  rc=$?
-  if [ "$rc" -eq "$code" ] && grep -qE -- "$pattern" <<<"$out"; then
-    passed=$((passed + 1))
-  else
-    failed=$((failed + 1))
-    echo "FAIL $name: exit $rc (want $code), output:"
-    echo "$out" | head -5
-  fi
-}
-check() {  # check NAME CONDITION...
-  local name=$1
-  shift
-  if "$@"; then passed=$((passed + 1)); else failed=$((failed + 1)); echo "FAIL $name"; fi
-}
+source "$(dirname "$0")/cli_checks.sh"
 
 expect help 0 'usage: raytex render SCENE' -- "$raytex" --help
 expect no-args 2 '^raytex: missing command' -- "$raytex"
@@ -224,5 +198,4 @@ if [ "${RAYTEX_SANITIZED:-0}" != 1 ] && [ -e "$tmp/banded.png" ]; then
   done
 fi
 
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+finish

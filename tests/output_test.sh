@@ -5,33 +5,7 @@
 # only; skipped with a message otherwise), never the system's.
 # Usage: output_test.sh RAYTEX SOURCE_DIR
 set -u
-raytex=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
-src=$(cd "$2" && pwd)
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-passed=0
-failed=0
-
-# expect NAME CODE PATTERN -- command...: exit code CODE and stderr+stdout matching PATTERN.
-expect() {
-  local name=$1 code=$2 pattern=$3
-  shift 4
-  local out rc
-  out=$("$@" 2>&1)
-  rc=$?
-  if [ "$rc" -eq "$code" ] && grep -qE -- "$pattern" <<<"$out"; then
-    passed=$((passed + 1))
-  else
-    failed=$((failed + 1))
-    echo "FAIL $name: exit $rc (want $code), output:"
-    echo "$out" | head -5
-  fi
-}
-check() {  # check NAME CONDITION...
-  local name=$1
-  shift
-  if "$@"; then passed=$((passed + 1)); else failed=$((failed + 1)); echo "FAIL $name"; fi
-}
+source "$(dirname "$0")/cli_checks.sh"
 is_png() { test "$(head -c 8 "$1" | od -An -tx1 | tr -d ' \n')" = 89504e470d0a1a0a; }
 no_temp() { test "$(ls -A "$1" | grep -c 'tmp-')" -eq 0; }
 
@@ -187,5 +161,4 @@ fi
 expect help-exit-codes 0 'output file or stdout not written, out of' -- "$raytex" --help
 expect help-output 0 'a device or FIFO is' -- "$raytex" --help
 
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+finish
