@@ -7,6 +7,7 @@
 #include <glm/trigonometric.hpp>
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <cstring>
 #include <map>
@@ -106,11 +107,15 @@ double solidPeriod(const TextureDesc& t) {
   }
 }
 
+// x clamped to +-TEXCOORD_LIMIT, as the kernel clamps its coordinates.
+double clampTexCoord(double x) { return std::clamp(x, -TEXCOORD_LIMIT, TEXCOORD_LIMIT); }
+
 // The plane's texture frame and the camera's position folded into texture offsets, in double.
 gpu::Plane packPlane(const Plane& p, const TextureDesc& texture, glm::dvec3 eye, uint32_t material) {
   // The frame is built once here by the same rule the CPU reference uses.
   PlaneFrame pf = planeFrame(p.normal, p.distance);
-  const double s = p.texScale;
+  // tex_scale as the kernel divides by it: a normal float (a subnormal may be flushed to 0).
+  const double s = std::clamp(p.texScale, double(FLT_MIN), double(FLT_MAX));
   gpu::Plane gp{};
   gp.normalDistance = glm::vec4(glm::vec3(pf.normal), float(pf.distance - glm::dot(pf.normal, eye)));
   gp.tangentScale = glm::vec4(glm::vec3(pf.tangent), float(s));
@@ -123,6 +128,7 @@ gpu::Plane packPlane(const Plane& p, const TextureDesc& texture, glm::dvec3 eye,
   double period = solidPeriod(texture);
   if (period > 0.0)
     solid = glm::dvec3(reduceModulo(solid.x, period), reduceModulo(solid.y, period), reduceModulo(solid.z, period));
+  solid = glm::dvec3(clampTexCoord(solid.x), clampTexCoord(solid.y), clampTexCoord(solid.z));
   gp.solidOffset = glm::vec4(glm::vec3(solid), 0.0f);
   gp.material = material;
   return gp;

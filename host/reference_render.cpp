@@ -1,5 +1,6 @@
 #include "reference_render.h"
 
+#include "common.h"
 #include "reference.h"
 #include "texture.h"
 
@@ -60,7 +61,7 @@ glm::dvec3 shadeReference(const Context& c, glm::dvec3 o, glm::dvec3 d) {
     glm::dvec3 specular = rDotV > 0.0 ? glm::dvec3(m.specular) * std::pow(rDotV, double(m.shininess)) : glm::dvec3(0.0);
     color += glm::dvec3(light.color) * (albedo * nDotL + specular);
   }
-  return color;
+  return glm::min(color, glm::dvec3(RADIANCE_LIMIT));  // as the kernel (double cannot overflow here)
 }
 
 }  // namespace

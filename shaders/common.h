@@ -99,6 +99,18 @@ using uvec4 = glm::uvec4;
 #define BAKED_MATERIAL_WORD 200u      // 200-439: 8 materials
 #define BAKED_WORD_COUNT 440
 
+// The largest texture coordinate the kernel forms (mapping.glsl, clampTexCoord) or the host
+// packs: far beyond float resolution (past 2^24 no fraction is left), and small enough that
+// squares, sums of three and 2^15 times it (turbulence's 16th octave) stay finite. Clamping to
+// it keeps every coordinate finite for any accepted tex_scale, scale, squares or strength (a
+// pattern that fine is far below a pixel); ordinary coordinates lie far inside it, unchanged.
+#define TEXCOORD_LIMIT 1.0e18
+
+// The largest radiance a sample returns (shading.glsl, shade; the reference clamps alike): a
+// product of large colours would overflow to infinity (and NaN where it meets a zero). Far
+// above white, and the sum of 64 x 64 samples of it stays finite.
+#define RADIANCE_LIMIT 1.0e30
+
 // Texture filtering: a build variant of the kernel (RAYTEX_FILTER_BOX), not a constant.
 #define FILTER_POINT 0  // point-sample textures at the hit (the course's method)
 #define FILTER_BOX 1    // average over the sample's footprint (ray differentials), where the

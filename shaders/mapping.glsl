@@ -5,6 +5,11 @@
 
 #define MAPPING_PI 3.14159265358979323846
 
+// Texture coordinates and phases clamped to +-TEXCOORD_LIMIT (common.h) stay finite.
+float clampTexCoord(float x) { return clamp(x, -TEXCOORD_LIMIT, TEXCOORD_LIMIT); }
+vec2 clampTexCoord(vec2 x) { return clamp(x, -TEXCOORD_LIMIT, TEXCOORD_LIMIT); }
+vec3 clampTexCoord(vec3 x) { return clamp(x, -TEXCOORD_LIMIT, TEXCOORD_LIMIT); }
+
 struct TexCoord {
   vec2 uv;      // 2D coordinate in [0,1]: u across, v up the image
   vec2 tile;    // plane: index of the repeated tile, floor(u_p/s), floor(v_p/s), mod 4096; sphere: 0
@@ -20,16 +25,18 @@ struct TexCoord {
 // p is relative to the camera, like every GPU position: u_p = (p_abs - o').t = (p + eye).t
 // (o' = d n is orthogonal to t), and the host folds eye.t/s into pl.uvOffset (its fraction
 // in xy, its integer part mod 4096 in zw: the checkers need only the tile's parity).
+// A tiny s (the host keeps it >= the smallest normal float) overflows p / s to infinity, and
+// floor and fract of infinity are NaN: the quotients are clamped to +-TEXCOORD_LIMIT.
 TexCoord planeTexCoord(Plane pl, vec3 p) {
   vec3 t = pl.tangentScale.xyz;
   float s = pl.tangentScale.w;
   vec3 b = pl.binormal.xyz;
-  vec2 st = vec2(dot(p, t), dot(p, b)) / s + pl.uvOffset.xy;
+  vec2 st = clampTexCoord(vec2(dot(p, t), dot(p, b)) / s) + pl.uvOffset.xy;
   TexCoord tc;
   vec2 cell = floor(st);
   tc.tile = cell + pl.uvOffset.zw;
   tc.uv = st - cell;
-  tc.solid = p / s + pl.solidOffset.xyz;
+  tc.solid = clampTexCoord(p / s) + pl.solidOffset.xyz;
   tc.clampV = false;
   return tc;
 }

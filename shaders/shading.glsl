@@ -57,10 +57,12 @@ vec3 offsetOrigin(vec3 p, vec3 n) {
 
 // Phong: ambient + per light (diffuse k_d N.L + specular k_s (R.V)^shininess) when
 // the light is visible. A texture's colour replaces k_d and also tints the ambient
-// term, so the pattern stays visible in shadow.
+// term, so the pattern stays visible in shadow. Colours are >= 0 but unbounded: a product of
+// large ones overflows to infinity, and infinity times a zero channel is NaN, so each product
+// that is multiplied again, and the result, are clamped to RADIANCE_LIMIT (common.h).
 vec3 shade(Surface s, Material m, vec3 albedo, vec3 toEye) {
   bool textured = m.textureKind != TEX_NONE;
-  vec3 color = frame.ambientLight.rgb * m.ambient.rgb * (textured ? albedo : vec3(1.0));
+  vec3 color = min(frame.ambientLight.rgb * m.ambient.rgb, vec3(RADIANCE_LIMIT)) * (textured ? albedo : vec3(1.0));
   vec3 origin = offsetOrigin(s.p, s.n);
   for (uint i = 0u; i < lightCount(); ++i) {
     vec3 toLight = lightAt(i).position.xyz - s.p;
@@ -73,7 +75,7 @@ vec3 shade(Surface s, Material m, vec3 albedo, vec3 toEye) {
     vec3 r = reflect(-l, s.n);
     float rDotV = max(dot(r, toEye), 0.0);
     vec3 specular = rDotV > 0.0 ? m.specular.rgb * pow(rDotV, m.specular.w) : vec3(0.0);
-    color += lightAt(i).color.rgb * (albedo * nDotL + specular);
+    color += lightAt(i).color.rgb * min(albedo * nDotL + specular, vec3(RADIANCE_LIMIT));
   }
-  return color;
+  return min(color, vec3(RADIANCE_LIMIT));
 }

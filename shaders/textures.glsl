@@ -20,6 +20,7 @@
 // 0 for an even integer-valued x, 1 for an odd one (float mod: no int casts or %
 // of negative values; accuracy.md F1).
 float textureParity(float x) { return mod(x, 2.0); }
+vec2 textureParity(vec2 x) { return mod(x, 2.0); }
 
 // Bilinear (the sampler's filter) at column 1 - u, row 1 - v: v = 1 is the image's top
 // row, and 1 - u undoes the mirror of the notes' (u, v) frames seen from outside
@@ -115,18 +116,24 @@ vec3 imageTextureColor(Material m, TexCoord tc) {
 }
 #endif
 
-// Blend factors t in [0,1]: colour = mix(color1, color2, t). q = solid * scale.
+// Blend factors t in [0,1]: colour = mix(color1, color2, t). q = solid * scale, clamped
+// (mapping.glsl, TEXCOORD_LIMIT) like every phase below: a huge scale or strength would
+// overflow them, and floor, fract or sin of infinity is NaN.
+vec3 noiseArgument(TexCoord tc, float scale) { return clampTexCoord(tc.solid * scale); }
 
 // `squares` (rounded, >= 1) checks per side of one tile; the tile term keeps the
 // pattern a proper checkerboard across tile borders for odd `squares`.
+// Summed as parities: the cells and sq * tile of a huge sq overflow the sum (parity of a
+// product: the product of parities; integer-valued floats, so exact).
 float checkerBlend(Material m, TexCoord tc) {
   float sq = max(floor(m.params.z + 0.5), 1.0);
   vec2 cell = floor(tc.uv * sq);
-  return textureParity(cell.x + cell.y + sq * (tc.tile.x + tc.tile.y));
+  return textureParity(textureParity(cell.x) + textureParity(cell.y) +
+                       textureParity(sq) * textureParity(tc.tile.x + tc.tile.y));
 }
 
 float solidCheckerBlend(Material m, TexCoord tc) {
-  vec3 cell = floor(tc.solid * m.params.z);
+  vec3 cell = floor(clampTexCoord(tc.solid * m.params.z));
   return textureParity(cell.x + cell.y + cell.z);
 }
 
@@ -150,14 +157,14 @@ float filteredParity(float x, float w) {
 float filteredCheckerBlend(Material m, TexCoord tc, Footprint fp) {
   float sq = max(floor(m.params.z + 0.5), 1.0);
   // floor(uv sq) + sq tile, mod 2 without forming the large unwrapped coordinate.
-  vec2 x = tc.uv * sq + mod(sq * tc.tile, 2.0);
-  vec2 w = uvWidth(fp) * sq;
+  vec2 x = tc.uv * sq + textureParity(sq) * textureParity(tc.tile);
+  vec2 w = clampTexCoord(uvWidth(fp) * sq);
   vec2 e = vec2(filteredParity(x.x, w.x), filteredParity(x.y, w.y));
   return clamp(0.5 - 0.5 * (1.0 - 2.0 * e.x) * (1.0 - 2.0 * e.y), 0.0, 1.0);
 }
 
 float filteredSolidCheckerBlend(Material m, TexCoord tc, Footprint fp) {
-  vec3 x = tc.solid * m.params.z, w = solidWidth(fp) * m.params.z;
+  vec3 x = clampTexCoord(tc.solid * m.params.z), w = clampTexCoord(solidWidth(fp) * m.params.z);
   vec3 a = vec3(1.0) - 2.0 * vec3(filteredParity(x.x, w.x), filteredParity(x.y, w.y), filteredParity(x.z, w.z));
   return clamp(0.5 - 0.5 * a.x * a.y * a.z, 0.0, 1.0);  // rounding may step just outside
 }
@@ -165,14 +172,14 @@ float filteredSolidCheckerBlend(Material m, TexCoord tc, Footprint fp) {
 #endif  // RAYTEX_FILTER_BOX
 
 float noiseBlend(Material m, TexCoord tc) {
-  return clamp(0.5 + 0.5 * perlinNoise(tc.solid * m.params.x), 0.0, 1.0);
+  return clamp(0.5 + 0.5 * perlinNoise(noiseArgument(tc, m.params.x)), 0.0, 1.0);
 }
 
 // Veins along the planes x + y = const, displaced by turbulence; cubing the
 // sine's [0,1] profile makes the color2 veins thin.
 float marbleBlend(Material m, TexCoord tc) {
-  vec3 q = tc.solid * m.params.x;
-  float s = 0.5 + 0.5 * sin(float(TEXTURE_PI) * (q.x + q.y) + m.params.y * turbulence(q, m.octaves));
+  vec3 q = noiseArgument(tc, m.params.x);
+  float s = 0.5 + 0.5 * sin(float(TEXTURE_PI) * (q.x + q.y) + clampTexCoord(m.params.y * turbulence(q, m.octaves)));
   return clamp(s * s * s, 0.0, 1.0);
 }
 
@@ -181,19 +188,19 @@ float marbleBlend(Material m, TexCoord tc) {
 // (grain); the squared sawtooth gives soft early wood and a sharp ring edge.
 float woodBlend(Material m, TexCoord tc) {
   float scale = m.params.x;
-  vec3 q = tc.solid * scale;
+  vec3 q = noiseArgument(tc, scale);
   float r = length(tc.solid.xz - 0.5);
-  float rings = scale * r + m.params.y * turbulence(vec3(q.x, 0.25 * q.y, q.z), m.octaves);
+  float rings = clampTexCoord(scale * r) + clampTexCoord(m.params.y * turbulence(vec3(q.x, 0.25 * q.y, q.z), m.octaves));
   float f = rings - floor(rings);
   return clamp(f * f, 0.0, 1.0);
 }
 
 float turbulenceBlend(Material m, TexCoord tc) {
-  return clamp(m.params.y * turbulence(tc.solid * m.params.x, m.octaves), 0.0, 1.0);
+  return clamp(m.params.y * turbulence(noiseArgument(tc, m.params.x), m.octaves), 0.0, 1.0);
 }
 
 float dturbulenceBlend(Material m, TexCoord tc) {
-  return clamp(m.params.y * dturbulence(tc.solid * m.params.x, m.octaves), 0.0, 1.0);
+  return clamp(m.params.y * dturbulence(noiseArgument(tc, m.params.x), m.octaves), 0.0, 1.0);
 }
 
 #ifdef RAYTEX_FILTER_BOX
@@ -231,7 +238,7 @@ vec3 phaseBandLimits(float w) {
 float filteredNoiseBlend(Material m, TexCoord tc, Footprint fp) {
   float w = octaveWeight(noiseFootprintWidth(fp, m.params.x, vec3(1.0)), NOISE_WEIGHT_CELLS);
   if (w <= 0.0) return 0.5;
-  return clamp(0.5 + 0.5 * w * perlinNoise(tc.solid * m.params.x), 0.0, 1.0);
+  return clamp(0.5 + 0.5 * w * perlinNoise(noiseArgument(tc, m.params.x)), 0.0, 1.0);
 }
 
 // marble's profile ((1 + sin x) / 2)^3 as a Fourier series, each harmonic k averaged over the
@@ -244,13 +251,13 @@ float filteredNoiseBlend(Material m, TexCoord tc, Footprint fp) {
 // marbleBlend. cos 2x and sin 3x come from sin x: one sin as before.
 float filteredMarbleBlend(Material m, TexCoord tc, Footprint fp) {
   float scale = m.params.x, strength = m.params.y;
-  vec3 q = tc.solid * scale;
+  vec3 q = noiseArgument(tc, scale);
   float unresolved;
   float turb = filteredTurbulence(q, m.octaves, noiseFootprintWidth(fp, scale, vec3(1.0)), unresolved);
-  float s = sin(float(TEXTURE_PI) * (q.x + q.y) + strength * turb);
+  float s = sin(float(TEXTURE_PI) * (q.x + q.y) + clampTexCoord(strength * turb));
   float a = float(TEXTURE_PI) * scale * (fp.dsdx.x + fp.dsdx.y);
   float b = float(TEXTURE_PI) * scale * (fp.dsdy.x + fp.dsdy.y);
-  float e1 = exp(-0.5 * strength * strength * unresolved), e4 = (e1 * e1) * (e1 * e1);
+  float e1 = exp(-0.5 * clampTexCoord(strength * strength) * unresolved), e4 = (e1 * e1) * (e1 * e1);
   vec3 k = phaseBandLimits(a) * phaseBandLimits(b) * vec3(e1, e4, e4 * e4 * e1);  // exp(-k^2 s^2/2)
   float t = 5.0 / 16.0 + (15.0 / 32.0) * k.x * s - (3.0 / 16.0) * k.y * (1.0 - 2.0 * s * s) -
             (1.0 / 32.0) * k.z * s * (3.0 - 4.0 * s * s);
@@ -272,11 +279,11 @@ float filteredWoodBlend(Material m, TexCoord tc, Footprint fp) {
   float scale = m.params.x, strength = m.params.y;
   vec3 stretch = vec3(1.0, 0.25, 1.0);
   float unresolved;
-  float turb = filteredTurbulence(tc.solid * scale * stretch, m.octaves, noiseFootprintWidth(fp, scale, stretch),
+  float turb = filteredTurbulence(noiseArgument(tc, scale) * stretch, m.octaves, noiseFootprintWidth(fp, scale, stretch),
                                   unresolved);
   vec2 d = tc.solid.xz - 0.5;
   float r = length(d);
-  float rings = scale * r + strength * turb;
+  float rings = clampTexCoord(scale * r) + clampTexCoord(strength * turb);
   vec2 radial = r > 0.0 ? d / r : vec2(0.0);
   float a = scale * dot(radial, fp.dsdx.xz), b = scale * dot(radial, fp.dsdy.xz);
   float w = sqrt(a * a + b * b + 12.0 * strength * strength * unresolved);
@@ -289,12 +296,12 @@ float filteredWoodBlend(Material m, TexCoord tc, Footprint fp) {
 float filteredTurbulenceBlend(Material m, TexCoord tc, Footprint fp) {
   float unresolved;
   float cells = noiseFootprintWidth(fp, m.params.x, vec3(1.0));
-  return clamp(m.params.y * filteredTurbulence(tc.solid * m.params.x, m.octaves, cells, unresolved), 0.0, 1.0);
+  return clamp(m.params.y * filteredTurbulence(noiseArgument(tc, m.params.x), m.octaves, cells, unresolved), 0.0, 1.0);
 }
 
 float filteredDturbulenceBlend(Material m, TexCoord tc, Footprint fp) {
   float cells = noiseFootprintWidth(fp, m.params.x, vec3(1.0));
-  return clamp(m.params.y * filteredDturbulence(tc.solid * m.params.x, m.octaves, cells), 0.0, 1.0);
+  return clamp(m.params.y * filteredDturbulence(noiseArgument(tc, m.params.x), m.octaves, cells), 0.0, 1.0);
 }
 #endif  // RAYTEX_FILTER_BOX
 

@@ -198,4 +198,11 @@ if [ "${RAYTEX_SANITIZED:-0}" != 1 ] && [ -e "$tmp/banded.png" ]; then
   done
 fi
 
+# Values at the ends of the float range render finite: exit 0 and no "non-finite colour values"
+# warning (the render fuzz test's reproducers, tests/fuzz/render_seeds/).
+for seed in plane-tex-scale-1e-38 checker-squares-3e38 colours-3e38; do
+  check "finite-$seed" bash -c "out=\$('$raytex' render '$src/tests/fuzz/render_seeds/$seed.cfg' \
+    -o '$tmp/$seed.png' --width 32 --height 24 2>&1) && [ -z \"\$out\" ]"
+done
+
 finish

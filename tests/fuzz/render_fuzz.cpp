@@ -1,0 +1,65 @@
+// libFuzzer target: scene text, as if it were a file in scenes/ (as parser_fuzz.cpp takes it),
+// rendered when it parses at 8 x 8 pixels and 1 sample with both texture filters (point and box)
+// on one Vulkan device created once. Every pixel of the float output must be finite: a
+// non-finite value (a NaN or infinity written as black) aborts. The pipelines are the
+// unspecialised kernel (every texture kind, counts from Frame, values from the uniform buffers),
+// created once, so an input costs a dispatch and no compilation. Scenes that buildGpuScene
+// refuses (over the kernel's limits, an image that does not load) are skipped. Built by
+// RAYTEX_FUZZ_RENDER=ON with clang; tests/fuzz/render_run.sh builds and runs it.
+#include "gpu_scene.h"
+#include "parser.h"
+#include "renderer.h"
+
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+namespace {
+
+constexpr uint32_t kSize = 8;
+
+Renderer& sharedRenderer() {
+  static Renderer* renderer = [] {
+    auto* r = new Renderer;  // never destroyed: the process ends with the fuzzer
+    createRenderer(*r, {-1, false});
+    return r;
+  }();
+  return *renderer;
+}
+
+// Renders the uploaded scene with `filter`; aborts on the first non-finite channel.
+void renderFinite(Renderer& renderer, uint32_t filter, const std::string& text) {
+  preparePipeline(renderer, {SceneShape{}, OUTPUT_SHADED, filter, 1, 0, BakedScene{}});
+  renderFrame(renderer);
+  readbackFrame(renderer);
+  const float* pixels = framePixels(renderer);
+  for (size_t i = 0; i < size_t(kSize) * kSize * 4; ++i) {
+    if (!std::isfinite(pixels[i])) {
+      fprintf(stderr, "non-finite value %g in channel %zu of pixel (%zu, %zu), filter %s, scene:\n%s\n",
+              double(pixels[i]), i % 4, i / 4 % kSize, i / 4 / kSize, filter == FILTER_BOX ? "box" : "point",
+              text.c_str());
+      abort();
+    }
+  }
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  static const std::string path = std::string(RAYTEX_SOURCE_DIR) + "/scenes/fuzz.cfg";
+  const std::string text(reinterpret_cast<const char*>(data), size);
+  GpuScene gpuScene;
+  try {
+    gpuScene = buildGpuScene(parseSceneText(text, path), kSize, kSize);
+  } catch (const SceneError&) {
+    return 0;  // not a scene raytex renders: parser_fuzz.cpp checks the messages
+  }
+  Renderer& renderer = sharedRenderer();
+  uploadScene(renderer, gpuScene);
+  renderFinite(renderer, FILTER_POINT, text);
+  renderFinite(renderer, FILTER_BOX, text);
+  return 0;
+}
