@@ -77,7 +77,8 @@ const char* usageText() {
          "devices  List the Vulkan devices and their indices.\n"
          "\n"
          "Exit codes: 0 success, 1 runtime failure (Vulkan, output file or stdout not written, out of\n"
-         "memory), 2 bad input (usage, scene, an output that is a scene file or image).\n"
+         "memory), 2 bad input (usage, scene, image file refused, an output that is one of the scene's\n"
+         "files). Rendering untrusted scenes: docs/security.md\n"
          "Scene format: docs/scene-format.md\n";
 }
 
