@@ -3,7 +3,7 @@
 // limits, material packing, image loading). Every input must either parse or throw SceneError
 // with a file:line:col location; anything else (another exception, a crash, a leak, undefined
 // behaviour under UBSan, a hang) is a finding. Built by RAYTEX_FUZZ=ON with clang;
-// tests/fuzz/run.sh builds and runs it.
+// tests/fuzz/run.sh parser builds and runs it.
 #include "gpu_scene.h"
 #include "parser.h"
 

@@ -5,7 +5,7 @@
 // unspecialised kernel (every texture kind, counts from Frame, values from the uniform buffers),
 // created once, so an input costs a dispatch and no compilation. Scenes that buildGpuScene
 // refuses (over the kernel's limits, an image that does not load) are skipped. Built by
-// RAYTEX_FUZZ_RENDER=ON with clang; tests/fuzz/render_run.sh builds and runs it.
+// RAYTEX_FUZZ_RENDER=ON with clang; tests/fuzz/run.sh render builds and runs it.
 #include "gpu_scene.h"
 #include "parser.h"
 #include "renderer.h"
