@@ -209,6 +209,29 @@ void reloadIfChanged(ViewerState& state, const std::string& path, const ReadPoli
 // says: 8 x 8, about a second at 60 frames per second.
 constexpr uint32_t kViewerSamplesPerPixel = 64;
 
+// F12: the image on screen, every sample in, written to `output` (the PNG raytex render writes
+// for this view). An output that is one of the scene's files now (a reload may have added it)
+// or a failed write is one line on stderr and in the title; the viewer goes on.
+void saveScreenshot(ViewerState& state, Renderer& renderer, const std::string& output, const char* settings) {
+  std::string error = outputClash(output, state.scene);
+  if (error.empty()) {
+    readbackFrame(renderer);
+    try {
+      writePngAtomic(output, encodeSrgb(framePixels(renderer), int(renderer.width), int(renderer.height)));
+    } catch (const std::runtime_error& e) {
+      error = e.what();
+    }
+  }
+  if (!error.empty()) {
+    fprintf(stderr, "raytex: %s\n", error.c_str());
+    state.message = "not saved, see the terminal";
+    return;
+  }
+  state.message = "wrote " + output;
+  printf("raytex: wrote %s (%ux%u, %s)\n", output.c_str(), renderer.width, renderer.height, settings);
+  fflush(stdout);
+}
+
 std::string title(const ViewerState& state, uint32_t samples, uint32_t target, double frameMs, double gpuMs) {
   std::string t = "raytex";
   if (!state.scene.spheres.empty()) t += " | sphere: " + materialName(state.scene, state.scene.spheres[0].material);
@@ -333,20 +356,21 @@ int runViewer(const RenderOptions& options) {
         glfwWaitEvents();
         continue;
       }
-      if (size.width != renderer.width || size.height != renderer.height) state.dirty = true;
-      for (const Sphere& o : state.scene.spheres)  // a material not packed (over MAX_MATERIALS)
-        if (!gpuScene.materialIndex.count(o.material)) state.dirty = true;
-      for (const Plane& o : state.scene.planes)
-        if (!gpuScene.materialIndex.count(o.material)) state.dirty = true;
-      if (state.dirty) {  // the size or the scene file changed: everything
-        bool images = job.filterBox;  // mip chains only for the filtered kernel
+      // Images are decoded only with the scene (start, reload) or when an object's material is
+      // not packed (over MAX_MATERIALS); a new size re-packs the camera alone.
+      bool unpacked = false;
+      for (const Sphere& o : state.scene.spheres) unpacked = unpacked || !gpuScene.materialIndex.count(o.material);
+      for (const Plane& o : state.scene.planes) unpacked = unpacked || !gpuScene.materialIndex.count(o.material);
+      if (size.width != renderer.width || size.height != renderer.height || unpacked) state.dirty = true;
+      if (state.dirty) {  // the size, the scene file or the packed materials changed: everything
         if (state.reloaded) {
           gpuScene = std::move(*state.reloaded);
           state.reloaded.reset();
-          packCamera(gpuScene, state.scene, size.width, size.height);
-        } else {
+        } else if (unpacked) {
+          bool images = job.filterBox;  // mip chains only for the filtered kernel
           gpuScene = buildGpuScene(state.scene, size.width, size.height, images, true, options.maxImageMiB);
         }
+        packCamera(gpuScene, state.scene, size.width, size.height);
         uploadScene(renderer, gpuScene);
         state.dirty = state.cameraMoved = false;
         samples = 0;
@@ -366,12 +390,8 @@ int runViewer(const RenderOptions& options) {
       if (state.screenshot && samples == target) {
         // Every sample in: bit-identical to raytex render's image with these settings.
         state.screenshot = false;
-        readbackFrame(renderer);
-        writePngAtomic(options.output, encodeSrgb(framePixels(renderer), int(renderer.width), int(renderer.height)));
-        state.message = "wrote " + options.output;
-        printf("raytex: wrote %s (%ux%u, %u spp, filter %s)\n", options.output.c_str(), renderer.width,
-               renderer.height, target, job.filterBox ? "box" : "point");
-        fflush(stdout);
+        const std::string settings = std::to_string(target) + " spp, filter " + (job.filterBox ? "box" : "point");
+        saveScreenshot(state, renderer, options.output, settings.c_str());
       }
       if (render || state.refresh) {
         state.refresh = false;

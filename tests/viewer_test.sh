@@ -109,7 +109,8 @@ check window-shows-render "$xwdDiff" "$tmp/window.xwd" "$tmp/render.png" 1
 mkdir -p "$tmp/scenes"
 cp "$src/scenes/textures.cfg" "$src/scenes/texture_include.cfg" "$tmp/scenes/"
 ln -s "$src/textures" "$tmp/textures"
-"$raytex" view "$tmp/scenes/textures.cfg" --width 160 --height 120 --validate >"$tmp/reload.log" 2>&1 &
+"$raytex" view "$tmp/scenes/textures.cfg" -o "$tmp/scenes/shot.png" --width 160 --height 120 --validate \
+  >"$tmp/reload.log" 2>&1 &
 viewer=$!
 waitWindow "$tmp/reload.log" reload-window-opens
 check reload-initial waitTitle 'sphere: aSolidChecker'
@@ -130,9 +131,21 @@ check reload-image-error-message grep -q "texture_include.cfg:[0-9]*:[0-9]*: can
 check reload-image-keeps-running kill -0 "$viewer"
 sed -i "s|\"$src/tests/malformed/images/truncated.png\"|\"../textures/earth.jpg\"|" "$tmp/scenes/texture_include.cfg"
 check reload-image-recovers waitTitle 'sphere: aWood .*reloaded'
+# A reload that makes -o one of the scene's images: F12 then refuses to write it, says why, and
+# the viewer goes on.
+cp "$src/textures/uv_grid.png" "$tmp/scenes/shot.png"
+sed -i 's|"../textures/earth.jpg"|"shot.png"|' "$tmp/scenes/texture_include.cfg"
+sed -i -e 's|^    aWood;|    // aWood;|' -e 's|^    // anImage;|    anImage;|' "$tmp/scenes/textures.cfg"
+check reload-output-image waitTitle 'sphere: anImage .*reloaded'
+xdotool key --window "$wid" F12
+check reload-output-refused-title waitTitle 'not saved'
+check reload-output-refused-message grep -q "refusing to write '$tmp/scenes/shot.png': it is an image the scene uses" \
+  "$tmp/reload.log"
+check reload-output-unchanged cmp -s "$src/textures/uv_grid.png" "$tmp/scenes/shot.png"
 xdotool key --window "$wid" Escape
 wait "$viewer"
-check reload-clean-exit test $? -eq 0
+rc=$?
+check reload-clean-exit test "$rc" -eq 0 || tail -5 "$tmp/reload.log"
 viewer=""
 
 echo "$passed passed, $failed failed"
