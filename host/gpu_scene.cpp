@@ -205,8 +205,7 @@ void packCamera(GpuScene& g, const Scene& scene, uint32_t width, uint32_t height
   g.frame = f;
 }
 
-GpuScene buildGpuScene(const Scene& scene, uint32_t width, uint32_t height, bool mipmaps, bool allMaterials,
-                       uint32_t maxImageMiB) {
+GpuScene buildGpuScene(const Scene& scene, uint32_t width, uint32_t height, const PackOptions& options) {
   GpuScene g;
   // Materials: only the used ones, re-indexed; image files become array layers.
   Material fallback = defaultMaterial();
@@ -244,9 +243,9 @@ GpuScene buildGpuScene(const Scene& scene, uint32_t width, uint32_t height, bool
       if (o.material == over) loc = o.loc;
     throw SceneError(loc, "the scene's objects use more than " + std::to_string(MAX_MATERIALS) + " materials");
   }
-  for (int m = 0; allMaterials && m < int(scene.materials.size()) && packed.size() < MAX_MATERIALS; ++m)
+  for (int m = 0; options.allMaterials && m < int(scene.materials.size()) && packed.size() < MAX_MATERIALS; ++m)
     if (std::find(packed.begin(), packed.end(), m) == packed.end()) packed.push_back(m);
-  g.images = probeSceneImages(scene, packed, mipmaps, maxImageMiB);
+  g.images = probeSceneImages(scene, packed, options.mipmaps, options.maxImageMiB);
   uint32_t packedKinds = 0;
   for (int m : packed) {
     const Material& material = materialAt(scene, m, fallback);
@@ -266,7 +265,7 @@ GpuScene buildGpuScene(const Scene& scene, uint32_t width, uint32_t height, bool
                         (1u << TEX_TURBULENCE) | (1u << TEX_DTURBULENCE)))
     fillNoiseTable(&g.noise);
 
-  if (!g.images.empty()) fillImageLayers(g, mipmaps);
+  if (!g.images.empty()) fillImageLayers(g, options.mipmaps);
   return g;
 }
 

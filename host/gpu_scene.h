@@ -68,15 +68,22 @@ struct GpuScene {
   std::vector<uint8_t> imageMipPixels;
 };
 
-// mipmaps: build the images' mip chains (only the box-filtered kernel reads them; 11 ms for
-// earth.jpg). allMaterials: pack every material the scene defines, not only those its objects
-// use, so that objects can switch material with packCamera alone (the viewer); shape
-// still holds only the kinds in use. Throws SceneError (with the texture's file location) if
-// an image cannot be loaded, or if the images' headers show that they would upload more than
-// maxImageMiB (scene_images.h): checked before any image is decoded, and each is decoded
-// straight into imagePixels when it has the array's size. width, height: output size in pixels.
-GpuScene buildGpuScene(const Scene& scene, uint32_t width, uint32_t height, bool mipmaps = true,
-                       bool allMaterials = false, uint32_t maxImageMiB = kDefaultMaxImageMiB);
+// How buildGpuScene packs a scene.
+struct PackOptions {
+  // The images' mip chains (only the box-filtered kernel reads them; 11 ms for earth.jpg).
+  bool mipmaps = true;
+  // Every material the scene defines, not only those its objects use, so that objects can
+  // switch material with packCamera alone (the viewer); shape still holds only the kinds in use.
+  bool allMaterials = false;
+  // The budget of image bytes uploaded (--max-image-mib; scene_images.h).
+  uint32_t maxImageMiB = kDefaultMaxImageMiB;
+};
+
+// Throws SceneError (with the texture's file location) if an image cannot be loaded, or if the
+// images' headers show that they would upload more than options.maxImageMiB: checked before any
+// image is decoded, and each is decoded straight into imagePixels when it has the array's
+// size. width, height: output size in pixels.
+GpuScene buildGpuScene(const Scene& scene, uint32_t width, uint32_t height, const PackOptions& options = {});
 
 // Re-packs what depends on the camera and the output size (the frame, and spheres, planes
 // and lights, which are camera-relative) for a scene whose materials are unchanged: cheap,

@@ -49,7 +49,10 @@ int renderHeadless(const RenderOptions& options, uint32_t extraFrames, HeadlessR
       fprintf(stderr, "raytex: %s\n", clash.c_str());
       return 2;
     }
-    gpuScene = buildGpuScene(scene, out->job.width, out->job.height, out->job.filterBox, false, options.maxImageMiB);
+    PackOptions pack;
+    pack.mipmaps = out->job.filterBox;
+    pack.maxImageMiB = options.maxImageMiB;
+    gpuScene = buildGpuScene(scene, out->job.width, out->job.height, pack);
   } catch (const SceneError& e) {
     fprintf(stderr, "%s\n", e.what());
     return 2;

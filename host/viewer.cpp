@@ -68,10 +68,10 @@ struct ViewerState {
   std::optional<GpuScene> reloaded;  // a reloaded scene's GPU data, its images checked and decoded
 };
 
-// What a reloaded scene's images must pass before it replaces the scene on screen.
+// How the viewer packs a scene, and what a reloaded scene's images must pass before it replaces
+// the scene on screen.
 struct ImageLimits {
-  bool mipmaps = false;  // mip chains (the filtered kernel) count in the budget
-  uint32_t maxImageMiB = kDefaultMaxImageMiB;
+  PackOptions pack;  // every material (a key switches to it), mip chains for the filtered kernel
   uint32_t maxImageDimension2D = 0, maxImageArrayLayers = 0;  // the device's
 };
 
@@ -188,7 +188,7 @@ void reloadIfChanged(ViewerState& state, const std::string& path, const ReadPoli
   try {
     Scene scene = parseSceneFile(path, policy);
     times = fileTimes(scene);
-    GpuScene gpuScene = buildGpuScene(scene, 1, 1, limits.mipmaps, true, limits.maxImageMiB);
+    GpuScene gpuScene = buildGpuScene(scene, 1, 1, limits.pack);
     std::string over = imagesOverDeviceLimits(gpuScene.images, limits.maxImageDimension2D, limits.maxImageArrayLayers);
     if (!over.empty()) throw std::runtime_error(over);
     state.scene = std::move(scene);
@@ -305,6 +305,10 @@ int runViewer(const RenderOptions& options) {
     fprintf(stderr, "raytex: %s\n", error.c_str());
     return error.find("exceeds") != std::string::npos ? 2 : 1;
   }
+  PackOptions pack;  // every material, so that a key can switch to it
+  pack.mipmaps = job.filterBox;  // mip chains only for the filtered kernel
+  pack.allMaterials = true;
+  pack.maxImageMiB = options.maxImageMiB;
   state.orbit = orbitOf(state.scene.camera);
   for (size_t i = 0; i < 8 && !state.scene.planes.empty(); ++i)
     if (materialIndex(state.scene, kCourseMaterials[i]) == state.scene.planes[0].material) state.planeMaterial = int(i);
@@ -367,8 +371,7 @@ int runViewer(const RenderOptions& options) {
           gpuScene = std::move(*state.reloaded);
           state.reloaded.reset();
         } else if (unpacked) {
-          bool images = job.filterBox;  // mip chains only for the filtered kernel
-          gpuScene = buildGpuScene(state.scene, size.width, size.height, images, true, options.maxImageMiB);
+          gpuScene = buildGpuScene(state.scene, size.width, size.height, pack);
         }
         packCamera(gpuScene, state.scene, size.width, size.height);
         uploadScene(renderer, gpuScene);
@@ -414,7 +417,7 @@ int runViewer(const RenderOptions& options) {
       if (now - lastTitle > std::chrono::milliseconds(250)) {  // also the reload poll
         const VkPhysicalDeviceLimits& device = renderer.device.properties.limits;
         reloadIfChanged(state, options.scene, ReadPolicy{options.allowRead}, times,
-                        {job.filterBox, options.maxImageMiB, device.maxImageDimension2D, device.maxImageArrayLayers});
+                        {pack, device.maxImageDimension2D, device.maxImageArrayLayers});
         double frameMs = stats.frameMs.empty() ? 0.0 : stats.frameMs.back();
         glfwSetWindowTitle(window.window, title(state, samples, target, frameMs, renderer.lastFrameMs).c_str());
         lastTitle = now;

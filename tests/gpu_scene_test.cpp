@@ -220,8 +220,11 @@ TEST(GpuScene, MoreIntersectionTestsPerSampleThanTheKernelLoopsOverIsASceneError
 
 TEST(GpuScene, AllMaterialsPacksUnusedOnesButSpecialisesToTheUsed) {
   Scene scene = parseSceneFile(std::string(RAYTEX_SOURCE_DIR) + "/scenes/textures.cfg");
-  GpuScene used = buildGpuScene(scene, 8, 8, false);
-  GpuScene all = buildGpuScene(scene, 8, 8, false, true);
+  PackOptions pack;
+  pack.mipmaps = false;
+  GpuScene used = buildGpuScene(scene, 8, 8, pack);
+  pack.allMaterials = true;
+  GpuScene all = buildGpuScene(scene, 8, 8, pack);
   EXPECT_EQ(used.materials.size(), 2u);
   EXPECT_EQ(all.materials.size(), scene.materials.size());
   EXPECT_EQ(all.shape, used.shape);

@@ -201,6 +201,14 @@ TEST(ImageLoad, FifoIsRefusedWithoutBlocking) {
   EXPECT_NE(loadError(dir.string() + "/").find("not a regular file"), std::string::npos);
 }
 
+PackOptions budget(bool mipmaps, uint32_t maxImageMiB) {
+  PackOptions pack;
+  pack.mipmaps = mipmaps;
+  pack.maxImageMiB = maxImageMiB;
+  return pack;
+}
+PackOptions noMipmaps() { return budget(false, kDefaultMaxImageMiB); }
+
 Scene wideAndTallScene() { return parseSceneFile(kSourceDir + "/tests/malformed/image-wide-and-tall-over-budget.cfg"); }
 
 // A 16384x1 and a 1x16384 PNG (208 bytes) would make a 16384x16384 array of two layers, 2 GiB:
@@ -208,7 +216,7 @@ Scene wideAndTallScene() { return parseSceneFile(kSourceDir + "/tests/malformed/
 TEST(SceneImages, WideAndTallImagesOverTheBudgetAreRefusedBeforeDecoding) {
   Scene scene = wideAndTallScene();
   try {
-    buildGpuScene(scene, 8, 8, false);
+    buildGpuScene(scene, 8, 8, noMipmaps());
     FAIL() << "expected a SceneError";
   } catch (const SceneError& e) {
     EXPECT_EQ(e.loc.line, 4);
@@ -237,10 +245,10 @@ Scene earthAndGridScene() {
 TEST(SceneImages, BudgetCountsWhatIsUploaded) {
   Scene scene = earthAndGridScene();
   EXPECT_EQ(imageUploadBytes(probeSceneImages(scene, {0, 1}, false, 16), false), uint64_t(16) << 20);
-  EXPECT_NO_THROW(buildGpuScene(scene, 8, 8, false, false, 16));
-  EXPECT_THROW(buildGpuScene(scene, 8, 8, true, false, 21), SceneError);
-  EXPECT_NO_THROW(buildGpuScene(scene, 8, 8, true, false, 22));
-  EXPECT_THROW(buildGpuScene(scene, 8, 8, false, false, 15), SceneError);
+  EXPECT_NO_THROW(buildGpuScene(scene, 8, 8, budget(false, 16)));
+  EXPECT_THROW(buildGpuScene(scene, 8, 8, budget(true, 21)), SceneError);
+  EXPECT_NO_THROW(buildGpuScene(scene, 8, 8, budget(true, 22)));
+  EXPECT_THROW(buildGpuScene(scene, 8, 8, budget(false, 15)), SceneError);
   EXPECT_THROW(loadReferenceImages(scene, 15), SceneError);
   EXPECT_EQ(loadReferenceImages(scene, 16).size(), size_t(2));
 }
@@ -248,7 +256,7 @@ TEST(SceneImages, BudgetCountsWhatIsUploaded) {
 // After the device is created: an image over its maxImageDimension2D (16384 on lavapipe, so
 // the header check stops larger ones first) is named, and uploadScene throws it (exit 1).
 TEST(SceneImages, DeviceLimitsNameTheImageOverThem) {
-  GpuScene g = buildGpuScene(earthAndGridScene(), 8, 8, false);
+  GpuScene g = buildGpuScene(earthAndGridScene(), 8, 8, noMipmaps());
   EXPECT_EQ(imagesOverDeviceLimits(g.images, 2048, 2), "");
   std::string over = imagesOverDeviceLimits(g.images, 1024, 2);
   EXPECT_NE(over.find("earth.jpg' is 2048x1024: the device's images are at most 1024 a side (maxImageDimension2D)"),
