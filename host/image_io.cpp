@@ -1,16 +1,11 @@
 #include "image_io.h"
 
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <deque>
-#include <stdexcept>
-
-#include <sys/stat.h>
-#include <unistd.h>
 
 #include <zlib.h>
 
@@ -217,24 +212,17 @@ int mipLevelCount(int width, int height) {
 std::vector<ImageRGBA8> mipChain(const ImageRGBA8& image) { return mipChain(ImageRGBA8(image)); }
 
 std::vector<ImageRGBA8> mipChain(ImageRGBA8&& level0) {
-  std::vector<ImageRGBA8> above = mipLevelsAbove(level0.pixels.data(), level0.width, level0.height);
+  const int width = level0.width, height = level0.height;
   std::vector<ImageRGBA8> chain;
-  chain.reserve(above.size() + 1);
+  chain.reserve(size_t(mipLevelCount(width, height)));
   chain.push_back(std::move(level0));
-  for (ImageRGBA8& level : above) chain.push_back(std::move(level));
-  return chain;
-}
-
-std::vector<ImageRGBA8> mipLevelsAbove(const uint8_t* pixels, int width, int height) {
-  std::vector<ImageRGBA8> chain;
   std::vector<uint8_t*> out;
   for (int l = 1; l < mipLevelCount(width, height); ++l) {
-    ImageRGBA8 level{std::max(1, width >> l), std::max(1, height >> l), {}};
-    level.pixels.resize(size_t(level.width) * level.height * 4);
-    chain.push_back(std::move(level));
+    chain.push_back({std::max(1, width >> l), std::max(1, height >> l), {}});
+    chain.back().pixels.resize(size_t(chain.back().width) * chain.back().height * 4);
+    out.push_back(chain.back().pixels.data());
   }
-  for (ImageRGBA8& level : chain) out.push_back(level.pixels.data());
-  writeMipLevels(pixels, width, height, out.data());
+  writeMipLevels(chain[0].pixels.data(), width, height, out.data());
   return chain;
 }
 

@@ -29,10 +29,9 @@ int mipLevelCount(int width, int height);
 // from the previous level's unrounded linear values (no 8-bit rounding builds up).
 std::vector<ImageRGBA8> mipChain(const ImageRGBA8& image);
 std::vector<ImageRGBA8> mipChain(ImageRGBA8&& image);  // moves the image into level 0
-// The chain without level 0, from level 0's texels (width x height x 4 bytes).
-std::vector<ImageRGBA8> mipLevelsAbove(const uint8_t* pixels, int width, int height);
-// The same levels written to out[0] (level 1), out[1] (level 2), ..., each max(1, width >> l) x
-// max(1, height >> l) x 4 bytes. Made row by row: besides the output, it holds a few rows of
+// The levels above level 0 of the chain of a width x height image (4 bytes a texel), written
+// to out[0] (level 1), out[1] (level 2), ..., each max(1, width >> l) x max(1, height >> l) x 4
+// bytes. Made row by row: besides the output, it holds a few rows of
 // floats per level, never a whole level.
 void writeMipLevels(const uint8_t* pixels, int width, int height, uint8_t* const* out);
 
