@@ -1,6 +1,7 @@
 #include "image_io.h"
-#include "output_file.h"
 #include "image_load.h"
+#include "output_file.h"
+#include "temp_dir.h"
 
 #include <gtest/gtest.h>
 
@@ -12,12 +13,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-fs::path tempDir(const std::string& name) {
-  fs::path dir = fs::temp_directory_path() / ("raytex_image_io_" + name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
+fs::path tempDir(const std::string& name) { return freshTempDir("image_io_" + name); }
 
 TEST(ImageIo, SrgbTransferFunctionRoundTrips) {
   // Reference points of the sRGB curve (IEC 61966-2-1).

@@ -8,6 +8,7 @@
 #include "parser.h"
 #include "reference_render.h"
 #include "scene_images.h"
+#include "temp_dir.h"
 
 #include <gtest/gtest.h>
 #include <zlib.h>
@@ -27,12 +28,7 @@ namespace {
 const std::string kSourceDir = RAYTEX_SOURCE_DIR;
 const std::string kHostile = kSourceDir + "/tests/malformed/images/";
 
-fs::path tempDir(const std::string& name) {
-  fs::path dir = fs::temp_directory_path() / ("raytex_image_load_" + name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
+fs::path tempDir(const std::string& name) { return freshTempDir("image_load_" + name); }
 
 std::string loadError(const std::string& path) {
   ImageRGBA8 image;

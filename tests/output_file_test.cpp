@@ -3,6 +3,7 @@
 #include "exit_status.h"
 #include "output_file.h"
 #include "parser.h"
+#include "temp_dir.h"
 
 #include <gtest/gtest.h>
 
@@ -24,12 +25,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-fs::path tempDir(const std::string& name) {
-  fs::path dir = fs::temp_directory_path() / ("raytex_output_file_" + name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
+fs::path tempDir(const std::string& name) { return freshTempDir("output_file_" + name); }
 
 std::vector<uint8_t> someBytes(size_t n) {
   std::vector<uint8_t> bytes(n);
