@@ -142,9 +142,7 @@ vec3 albedoAt(Hit hit, Surface s, Material m, vec3 origin, vec2 film, float spac
   float ratio = alongX ? lx / max(ly, 1.0e-30) : ly / max(lx, 1.0e-30);
   // Probes matter only where the long axis spans a good part of a check: no probe shorter
   // than a quarter of one (a footprint inside a check is already exact).
-  float checks = m.textureKind == TEX_CHECKER
-                     ? length(alongX ? fp.duvdx : fp.duvdy) * max(floor(m.params.z + 0.5), 1.0)
-                     : length(alongX ? fp.dsdx : fp.dsdy) * m.params.z;
+  float checks = alongX ? filteredCells(m, fp.duvdx, fp.dsdx) : filteredCells(m, fp.duvdy, fp.dsdy);
   uint k = uint(clamp(ceil(min(ratio, 4.0 * checks)), 1.0, float(MAX_PROBES)));
   if (k == 1u) return textureColor(m, s.tc, fp);
   if (alongX) {

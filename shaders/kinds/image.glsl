@@ -1,0 +1,100 @@
+// image: a picture file, bilinear at the hit (point) or averaged
+// over the footprint in its mip chain (box). Oracle: sampleImageReference (host/reference_render.h).
+#ifndef RAYTEX_KIND_IMAGE_GLSL
+#define RAYTEX_KIND_IMAGE_GLSL
+
+// Bilinear (the sampler's filter) at column 1 - u, row 1 - v: v = 1 is the image's top
+// row, and 1 - u undoes the mirror of the notes' (u, v) frames seen from outside
+// (docs/textures.md, "Image orientation"). REPEAT wraps u; on the sphere (clampV) t is
+// kept half a texel inside the image so the poles do not blend the top and bottom rows.
+vec3 imagePoint(Material m, TexCoord tc) {
+  vec2 st = vec2(1.0 - tc.uv.x, 1.0 - tc.uv.y);
+  if (tc.clampV) {
+    float h = float(textureSize(images, 0).y);
+    st.y = clamp(st.y, 0.5 / h, 1.0 - 0.5 / h);
+  }
+  return textureLod(images, vec3(st, float(m.imageLayer)), 0.0).rgb;
+}
+
+#ifdef RAYTEX_FILTER_BOX
+// FILTER_BOX (docs/textures.md, "Image filtering"): trilinear lookups in the image's mip chain
+// (linear-light box averages built on the host) over the sample's footprint, the Jacobian
+// J = [dst/dx dst/dy] in texels. J's ellipse is split along its major axis into probes, each
+// at the level of the longer of the minor axis and the probe spacing (anisotropic filtering
+// in the shader: lavapipe's sampler anisotropy returned wrong texels in this compute kernel).
+// The derivatives are analytic, so the sphere's u seam gets no wrong level (accuracy.md F2).
+// At most IMAGE_MAX_PROBES probes on planes (beyond that the footprint is blurred along its
+// minor axis, as hardware anisotropic filtering does); on spheres IMAGE_SPHERE_PROBES, since
+// the map's anisotropy grows as 1/sin(colatitude) near the poles (33 at 1.7 degrees).
+const float IMAGE_MAX_PROBES = 8.0;
+const float IMAGE_SPHERE_PROBES = 32.0;
+// The level is log2(width) - log2(3)/2: a mip texel (box of 2^l texels) under bilinear
+// filtering (tent of half-width 2^l) has variance 4^l/4, a box of the footprint's width w
+// has w^2/12; the bias makes the two equal (and with probes, the whole filter's variance
+// along the major axis equals the footprint's box).
+const float IMAGE_LOD_BIAS = -0.79248125;
+
+vec3 imageBox(Material m, TexCoord tc, Footprint fp) {
+  vec2 st = vec2(1.0 - tc.uv.x, 1.0 - tc.uv.y);
+  float layer = float(m.imageLayer);
+  vec2 size = vec2(textureSize(images, 0).xy);
+  float maxLevel = float(textureQueryLevels(images) - 1);
+  float k = 1.0;         // probes
+  vec2 step = vec2(0.0);  // st from one probe to the next
+  float width2;           // squared width of each probe's footprint, in level-0 texels
+  if (tc.clampV && tc.solid.x == 0.5 && tc.solid.z == 0.5) {
+    // The exact pole of a sphere (n.x = n.z = 0, where the mapping sets u = 0.5): the
+    // mapping's derivatives are 0/0 (they come out 0), but the footprint is a disc around the
+    // pole: every u, and v within half a sample step of it, |dn| / 2pi (solid = (n + 1) / 2,
+    // so dn = 2 ds). Probes all around the circle, in the middle of that band and as wide as
+    // it: an equirectangular image's rows near a pole all picture the pole's surroundings and
+    // change slowly along u.
+    float band = min(max(length(fp.dsdx), length(fp.dsdy)) / float(TEXTURE_PI), 1.0);
+    st.y = st.y < 0.5 ? 0.5 * band : 1.0 - 0.5 * band;
+    k = IMAGE_SPHERE_PROBES;
+    step = vec2(1.0 / k, 0.0);
+    width2 = band * band * size.y * size.y;
+  } else {
+    // Steps of st = (1 - u, 1 - v) for one sample step in x and in y, in level-0 texels.
+    vec2 dstdx = -fp.duvdx, dstdy = -fp.duvdy;
+    // Near a sphere's poles du grows without bound, but no footprint covers more than every u.
+    if (tc.clampV) {
+      dstdx.x = clamp(dstdx.x, -1.0, 1.0);
+      dstdy.x = clamp(dstdy.x, -1.0, 1.0);
+    }
+    vec2 dx = dstdx * size, dy = dstdy * size;
+    // Principal axes of the footprint: the eigenvalues of J J^T, J = [dx dy], are the squared
+    // semi-axes of its ellipse (the lengths of dx and dy overstate the minor axis when they
+    // are skewed, as on the sphere away from the equator).
+    float a = dx.x * dx.x + dy.x * dy.x, b = dx.x * dx.y + dy.x * dy.y, c = dx.y * dx.y + dy.y * dy.y;
+    if (!(a + c < 1.0e30)) {  // non-finite or huge (a differential ray parallel to the surface)
+      if (tc.clampV) st.y = 0.5;
+      return textureLod(images, vec3(st, layer), maxLevel).rgb;
+    }
+    float dev = sqrt(0.25 * (a - c) * (a - c) + b * b);
+    float major2 = 0.5 * (a + c) + dev, minor2 = max(0.5 * (a + c) - dev, 0.0);
+    // Probes only where the footprint is longer than a texel: under magnification one
+    // bilinear lookup at level 0 is exactly the point kernel's.
+    if (major2 > 1.0) k = clamp(ceil(sqrt(major2 / max(minor2, 1.0e-30))), 1.0, tc.clampV ? IMAGE_SPHERE_PROBES : IMAGE_MAX_PROBES);
+    width2 = max(minor2, major2 / (k * k));
+    // The major axis: an eigenvector of J J^T, in the form without cancellation.
+    vec2 axis = a >= c ? vec2(0.5 * (a - c) + dev, b) : vec2(b, 0.5 * (c - a) + dev);
+    axis = dot(axis, axis) > 0.0 ? normalize(axis) : vec2(1.0, 0.0);
+    step = axis * sqrt(major2) / (size * k);
+  }
+  float lod = clamp(0.5 * log2(max(width2, 1.0e-30)) + IMAGE_LOD_BIAS, 0.0, maxLevel);
+  // On the sphere t stays half a texel of the coarser of the two levels blended inside the
+  // image, so no level blends the two poles' rows. (Its height by shifting: lavapipe answers
+  // textureSize(images, lod) with one invocation's lod for the whole SIMD group.)
+  float h = float(max(int(size.y) >> int(ceil(lod)), 1));
+  vec2 tRange = tc.clampV ? vec2(0.5 / h, 1.0 - 0.5 / h) : vec2(-1.0e30, 1.0e30);
+  vec3 sum = vec3(0.0);
+  for (float i = 0.5 - 0.5 * k; i < 0.5 * k; i += 1.0) {
+    vec2 q = st + i * step;
+    sum += textureLod(images, vec3(q.x, clamp(q.y, tRange.x, tRange.y), layer), lod).rgb;
+  }
+  return sum / k;
+}
+#endif  // RAYTEX_FILTER_BOX
+
+#endif  // RAYTEX_KIND_IMAGE_GLSL
