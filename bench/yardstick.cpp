@@ -22,6 +22,7 @@
 #include "output_file.h"
 #include "median.h"
 #include "noise.h"
+#include "noise_permutation.h"
 #include "parser.h"
 #include "renderer.h"
 // Generated at build time by glslangValidator --vn (CMakeLists.txt, add_spirv).

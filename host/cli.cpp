@@ -1,5 +1,7 @@
 #include "cli.h"
 
+#include "texture_kinds.h"
+
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -22,8 +24,8 @@ bool parseUint(const std::string& flag, const std::string& text, uint32_t lo, ui
 
 }  // namespace
 
-const char* usageText() {
-  return "usage: raytex render SCENE [-o out.png] [--width W] [--height H] [--spp N]\n"
+std::string usageText() {
+  return std::string("usage: raytex render SCENE [-o out.png] [--width W] [--height H] [--spp N]\n"
          "                    [--filter point|box] [--reference] [--device N] [--stats] [--validate]\n"
          "                    [--max-image-mib N] [--allow-read DIR]...\n"
          "       raytex view SCENE [-o shot.png] [--width W] [--height H] [--spp N] [--filter point|box]\n"
@@ -79,7 +81,8 @@ const char* usageText() {
          "Exit codes: 0 success, 1 runtime failure (Vulkan, output file or stdout not written, out of\n"
          "memory), 2 bad input (usage, scene, image file refused, an output that is one of the scene's\n"
          "files). Rendering untrusted scenes: docs/security.md\n"
-         "Scene format: docs/scene-format.md\n";
+         "Scene format: docs/scene-format.md; texture kinds: ") +
+         textureKindList() + "\n";
 }
 
 bool parseCli(const std::vector<std::string>& args, CliArgs* out, std::string* error) {

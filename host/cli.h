@@ -57,4 +57,4 @@ bool resolveJob(const RenderOptions& options, const RenderSettings& scene, uint3
 // Parses argv; false with *error set (a one-line message) on bad usage.
 bool parseCli(const std::vector<std::string>& args, CliArgs* out, std::string* error);
 
-const char* usageText();
+std::string usageText();

@@ -154,6 +154,15 @@ void throwVkError(const char* call, VkResult result, const char* file, int line)
                     std::to_string(line) + ")");
 }
 
+// The driver of a physical device (Vulkan 1.2 core).
+static VkDriverId driverId(VkPhysicalDevice physical) {
+  VkPhysicalDeviceDriverProperties driver{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES};
+  VkPhysicalDeviceProperties2 properties{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2};
+  properties.pNext = &driver;
+  vkGetPhysicalDeviceProperties2(physical, &properties);
+  return driver.driverID;
+}
+
 void createDevice(Device& d, const DeviceOptions& options) {
   d.validation = options.validation && hasLayer(kValidationLayer);
   if (options.validation && !d.validation)
@@ -201,6 +210,7 @@ void createDevice(Device& d, const DeviceOptions& options) {
   }
   vkGetPhysicalDeviceProperties(d.physical, &d.properties);
   vkGetPhysicalDeviceMemoryProperties(d.physical, &d.memory);
+  d.lavapipe = driverId(d.physical) == VK_DRIVER_ID_MESA_LLVMPIPE;
 
   float priority = 1.0f;
   VkDeviceQueueCreateInfo queueInfo{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};

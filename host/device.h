@@ -44,6 +44,7 @@ struct Device {
   uint32_t queueFamily = 0;
   VkQueue queue = VK_NULL_HANDLE;
   VkCommandPool commandPool = VK_NULL_HANDLE;
+  bool lavapipe = false;    // the driver is Mesa's lavapipe (VK_DRIVER_ID_MESA_LLVMPIPE): its limits apply
   bool validation = false;  // the layer is active
   int validationErrors = 0;  // errors the layer reported (messages go to stderr)
 };

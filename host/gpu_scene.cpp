@@ -1,7 +1,9 @@
 #include "gpu_scene.h"
 
 #include "mapping.h"
-#include "noise.h"
+#include "noise_permutation.h"
+#include "scene_limits.h"
+#include "texture_kinds.h"
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
@@ -12,29 +14,9 @@
 #include <cstring>
 #include <map>
 
-static_assert(int(TextureKind::None) == TEX_NONE && int(TextureKind::Image) == TEX_IMAGE &&
-                  int(TextureKind::Checker) == TEX_CHECKER &&
-                  int(TextureKind::SolidChecker) == TEX_SOLID_CHECKER &&
-                  int(TextureKind::Noise) == TEX_NOISE && int(TextureKind::Marble) == TEX_MARBLE &&
-                  int(TextureKind::Wood) == TEX_WOOD &&
-                  int(TextureKind::Turbulence) == TEX_TURBULENCE &&
-                  int(TextureKind::DTurbulence) == TEX_DTURBULENCE,
-              "TextureKind must match TEX_* in common.h");
-
 namespace {
 
 glm::vec4 v4(const glm::vec3& v, float w = 0.0f) { return glm::vec4(v, w); }
-
-// Materials referenced by objects, in first-use order; -1 stands for the default material.
-std::vector<int> usedMaterials(const Scene& scene) {
-  std::vector<int> used;
-  auto note = [&](int m) {
-    if (std::find(used.begin(), used.end(), m) == used.end()) used.push_back(m);
-  };
-  for (const Sphere& s : scene.spheres) note(s.material);
-  for (const Plane& p : scene.planes) note(p.material);
-  return used;
-}
 
 const Material& materialAt(const Scene& scene, int index, const Material& fallback) {
   return index < 0 ? fallback : scene.materials[size_t(index)];
@@ -45,15 +27,10 @@ gpu::Material packMaterial(const Material& m, uint32_t imageLayer) {
   g.ambient = v4(m.ambient);
   g.diffuse = v4(m.diffuse);
   g.specular = v4(m.specular, m.shininess);
-  g.color1 = v4(m.texture.color1);
-  g.color2 = v4(m.texture.color2);
-  g.params = glm::vec4(m.texture.scale, m.texture.strength, m.texture.squares, 0.0f);
-  g.textureKind = uint32_t(m.texture.kind);
-  g.octaves = uint32_t(std::max(m.texture.octaves, 1));
+  packTexture(m.texture, &g);
   g.imageLayer = imageLayer;
   return g;
 }
-
 }  // namespace
 
 SceneShape sceneShape(const Scene& scene) {
@@ -94,17 +71,7 @@ double reduceModulo(double x, double period) { return x - period * std::floor(x 
 
 // The period of a solid texture in solid coordinates, or 0 if it has none.
 double solidPeriod(const TextureDesc& t) {
-  switch (t.kind) {
-    case TextureKind::SolidChecker:
-      return 2.0 / double(t.squares);  // parity of floor(solid * squares) summed over axes
-    case TextureKind::Noise:
-    case TextureKind::Marble:
-    case TextureKind::Turbulence:
-    case TextureKind::DTurbulence:
-      return 256.0 / double(t.scale);  // the noise lattice repeats every 256 (marble's sine every 2)
-    default:
-      return 0.0;  // wood's rings are not periodic
-  }
+  return t.kind == TextureKind::None ? 0.0 : textureKindInfo(t.kind).solidPeriod(t);
 }
 
 // x clamped to +-TEXCOORD_LIMIT, as the kernel clamps its coordinates.
@@ -210,43 +177,12 @@ GpuScene buildGpuScene(const Scene& scene, uint32_t width, uint32_t height, cons
   // Materials: only the used ones, re-indexed; image files become array layers.
   Material fallback = defaultMaterial();
   std::map<int, uint32_t> materialIndex;
-  // The kernel's uniform blocks hold MAX_SPHERES, MAX_PLANES and MAX_LIGHTS: point at the first
-  // one over.
-  auto checkCount = [](const auto& items, size_t max, const char* what) {
-    if (items.size() > max)
-      throw SceneError(items[max].loc, "the scene has " + std::to_string(items.size()) + " " + what +
-                                           "; raytex renders at most " + std::to_string(max));
-  };
-  checkCount(scene.spheres, MAX_SPHERES, "spheres");
-  checkCount(scene.planes, MAX_PLANES, "planes");
-  checkCount(scene.lights, MAX_LIGHTS, "lights");
-  // Each light's shadow ray tests every object (kMaxLoopIterations): point at the first light
-  // over the limit.
-  const size_t objects = scene.spheres.size() + scene.planes.size();
-  const uint64_t iterations = loopIterationsPerSample(scene.lights.size(), objects);
-  if (iterations > kMaxLoopIterations) {
-    // With n lights, (n + 1) (objects + 1) passes the limit from n = limit / (objects + 1) on.
-    size_t first = std::min(std::max<size_t>(kMaxLoopIterations / (objects + 1), 1), scene.lights.size()) - 1;
-    throw SceneError(scene.lights[first].loc,
-                     "the scene has " + std::to_string(scene.lights.size()) + " lights and " +
-                         std::to_string(objects) + " objects: (lights + 1) x (objects + 1) = " +
-                         std::to_string(iterations) + " intersection tests per sample, raytex does at most " +
-                         std::to_string(kMaxLoopIterations));
-  }
+  checkSceneLimits(scene);  // also checked when parsed; scenes built in code come here directly
   std::vector<int> packed = usedMaterials(scene);
-  if (packed.size() > MAX_MATERIALS) {  // the kernel's uniform block holds MAX_MATERIALS
-    int over = packed[MAX_MATERIALS];
-    FileLoc loc = scene.path.empty() ? FileLoc{} : FileLoc{scene.path, 1, 1};
-    for (const Sphere& o : scene.spheres)
-      if (o.material == over) loc = o.loc;
-    for (const Plane& o : scene.planes)
-      if (o.material == over) loc = o.loc;
-    throw SceneError(loc, "the scene's objects use more than " + std::to_string(MAX_MATERIALS) + " materials");
-  }
   for (int m = 0; options.allMaterials && m < int(scene.materials.size()) && packed.size() < MAX_MATERIALS; ++m)
     if (std::find(packed.begin(), packed.end(), m) == packed.end()) packed.push_back(m);
   g.images = probeSceneImages(scene, packed, options.mipmaps, options.maxImageMiB);
-  uint32_t packedKinds = 0;
+  bool needsNoise = false;
   for (int m : packed) {
     const Material& material = materialAt(scene, m, fallback);
     uint32_t layer = 0;
@@ -254,16 +190,14 @@ GpuScene buildGpuScene(const Scene& scene, uint32_t width, uint32_t height, cons
       while (g.images[layer].path != material.texture.imagePath) ++layer;
     materialIndex[m] = uint32_t(g.materials.size());
     g.materials.push_back(packMaterial(material, layer));
-    packedKinds |= 1u << uint32_t(material.texture.kind);
+    if (material.texture.kind != TextureKind::None) needsNoise |= textureKindInfo(material.texture.kind).needsNoise;
   }
   g.shape = sceneShape(scene);
 
   g.materialIndex = materialIndex;
   packCamera(g, scene, width, height);
 
-  if (packedKinds & ((1u << TEX_NOISE) | (1u << TEX_MARBLE) | (1u << TEX_WOOD) |
-                        (1u << TEX_TURBULENCE) | (1u << TEX_DTURBULENCE)))
-    fillNoiseTable(&g.noise);
+  if (needsNoise) fillNoiseTable(&g.noise);
 
   if (!g.images.empty()) fillImageLayers(g, options.mipmaps);
   return g;

@@ -38,15 +38,6 @@ struct BakedScene {
   }
 };
 
-// Lavapipe ends a loop nest after 65535 iterations (its guard against endless loops): the rest
-// of the kernel's work is silently dropped (64 lights and 1024 spheres lost their shadow tests).
-// A sample's loops run about (lights + 1) x (objects + 1) times; a scene is refused over this,
-// and samples that together would pass it are dispatched one at a time (headless.cpp).
-constexpr uint64_t kMaxLoopIterations = 65000;
-inline uint64_t loopIterationsPerSample(size_t lights, size_t objects) {
-  return uint64_t(lights + 1) * uint64_t(objects + 1);
-}
-
 struct GpuScene {
   gpu::Frame frame{};
   std::vector<gpu::Sphere> spheres;

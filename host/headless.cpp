@@ -1,5 +1,7 @@
 #include "headless.h"
 
+#include "scene_limits.h"
+
 #include "exit_status.h"
 #include "gpu_scene.h"
 #include "output_file.h"
@@ -38,8 +40,9 @@ int renderHeadless(const RenderOptions& options, uint32_t extraFrames, HeadlessR
   std::chrono::steady_clock::time_point t = std::chrono::steady_clock::now();
   // Parse and load images before touching Vulkan: bad input fails fast.
   GpuScene gpuScene;
+  Scene scene;
   try {
-    Scene scene = parseSceneFile(options.scene, ReadPolicy{options.allowRead});
+    scene = parseSceneFile(options.scene, ReadPolicy{options.allowRead});
     std::string error;
     if (!resolveJob(options, scene.render, 1, &out->job, &error)) {
       fprintf(stderr, "raytex: %s\n", error.c_str());
@@ -66,9 +69,10 @@ int renderHeadless(const RenderOptions& options, uint32_t extraFrames, HeadlessR
     createRenderer(renderer, {options.device, options.validate});
     out->deviceName = renderer.device.properties.deviceName;
     times.device = lapMs(t);
+    if (renderer.device.lavapipe) checkLoopLimit(scene);
     // Samples that together would pass lavapipe's loop limit (kMaxLoopIterations) are added one
     // dispatch at a time by the progressive kernel: the same image, bit for bit.
-    const bool perSample = job.samplesPerPixel > 1 &&
+    const bool perSample = renderer.device.lavapipe && job.samplesPerPixel > 1 &&
                            job.samplesPerPixel * loopIterationsPerSample(gpuScene.lights.size(),
                                                                         gpuScene.spheres.size() + gpuScene.planes.size()) >
                                kMaxLoopIterations;
@@ -132,6 +136,10 @@ int renderHeadless(const RenderOptions& options, uint32_t extraFrames, HeadlessR
       fprintf(stderr, "raytex: %d Vulkan validation error(s)\n", validationErrors);
       return 1;
     }
+  } catch (const SceneError& e) {  // a limit of the device's driver
+    fprintf(stderr, "%s\n", e.what());
+    destroyRenderer(renderer);
+    return 2;
   } catch (const std::exception& e) {
     fprintf(stderr, "raytex: %s\n", exceptionText(e).c_str());
     destroyRenderer(renderer);

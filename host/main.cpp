@@ -77,7 +77,7 @@ int runRender(const RenderOptions& options) {
 int runCommand(const CliArgs& cli) {
   switch (cli.command) {
     case CliCommand::Help:
-      fputs(usageText(), stdout);
+      fputs(usageText().c_str(), stdout);
       return 0;
     case CliCommand::Version:
       puts("raytex 0.1.0");

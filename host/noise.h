@@ -1,13 +1,12 @@
 // Ken Perlin's improved noise (SIGGRAPH 2002) in double precision: the CPU
-// oracle of shaders/noise.glsl, and the permutation table both sides share.
+// oracle of shaders/noise.glsl. The permutation table both sides share is data, in
+// noise_permutation.h.
 //
 // - Lattice cell from floor (never int truncation), reduced mod 256: period 256.
 // - Quintic fade 6t^5 - 15t^4 + 10t^3; gradients: the 12 cube-edge midpoints
 //   (two components +-1, one 0), picked by the hash's low 4 bits, the last four
 //   (h = 12..15) repeating (1,1,0), (0,-1,1), (-1,1,0), (0,-1,-1).
-// - The permutation is NOT Perlin's published table: it is a Fisher-Yates
-//   shuffle of 0..255 driven by splitmix64 from a fixed seed, so it is the same
-//   on every platform and compiler.
+// - The permutation: noise_permutation.h.
 #pragma once
 
 #include <glm/vec3.hpp>
@@ -16,24 +15,10 @@
 #include <array>
 #include <cstdint>
 
-namespace gpu {
-struct NoiseTable;
-}
-
 // The most octaves turbulence()/dturbulence() sum (larger counts are clamped;
 // octave 16 already has 65536x the base frequency). Same as NOISE_MAX_OCTAVES in
 // shaders/noise.glsl.
 constexpr int kNoiseMaxOctaves = 16;
-
-// The seed of the permutation shuffle.
-constexpr uint64_t kNoiseSeed = 0x7261797465782d31ull;  // "raytex-1"
-
-// The 256-entry permutation repeated twice (perm[i + 256] == perm[i]).
-const std::array<uint32_t, 512>& noisePermutation();
-
-// Packs noisePermutation() for the BINDING_NOISE uniform buffer, two neighbours a word:
-// table->pairs[i >> 2][i & 3] = perm[i] | perm[(i + 1) % 512] << 16.
-void fillNoiseTable(gpu::NoiseTable* table);
 
 // The gradient the hash h selects (only the low 4 bits are used).
 glm::dvec3 noiseGradientVector(uint32_t h);

@@ -4,7 +4,8 @@
 #include "parser.h"
 
 #include "read_policy.h"
-#include "texture.h"
+#include "scene_limits.h"
+#include "texture_kinds.h"
 #include "tokenizer.h"
 
 #include <glm/geometric.hpp>
@@ -125,17 +126,6 @@ bool isReserved(const std::string& w) {
 
 bool isBlockKeyword(const std::string& w) {
   return w == "sphere" || w == "plane" || w == "camera" || w == "light" || w == "material" || w == "render";
-}
-
-// Which texture keys apply to which kinds (docs/scene-format.md).
-bool textureKeyApplies(TextureKind kind, const std::string& key) {
-  if (key == "file") return kind == TextureKind::Image;
-  if (kind == TextureKind::Image) return false;
-  if (key == "color1" || key == "color2") return true;
-  if (key == "squares") return kind == TextureKind::Checker || kind == TextureKind::SolidChecker;
-  if (kind == TextureKind::Checker || kind == TextureKind::SolidChecker) return false;
-  if (key == "scale") return true;
-  return kind != TextureKind::Noise;  // strength, octaves
 }
 
 class Parser {
@@ -366,54 +356,53 @@ class Parser {
     st_.scene.materials.push_back(m);
   }
 
-  // KIND { key = value; ... } [;]   or   KIND;
+  // KIND { key = value; ... } [;]   or   KIND;  the kind's keys from its row (texture_kinds.h).
   TextureDesc parseTexture() {
     Token kindTok = expect(Tok::Ident, "a texture kind after 'texture ='");
-    TextureKind kind;
-    if (!textureKindFromName(kindTok.text, &kind))
-      fail(kindTok.loc, "unknown texture kind " + quote(kindTok.text) +
-                            " (expected image, checker, solid_checker, noise, marble, wood, turbulence or dturbulence)");
-    TextureDesc t = defaultTexture(kind);
+    const TextureKindInfo* info = findTextureKind(kindTok.text);
+    if (!info) fail(kindTok.loc, "unknown texture kind " + quote(kindTok.text) + " (expected " + textureKindList() + ")");
+    TextureDesc t = info->defaults;
     t.loc = kindTok.loc;
-    std::string where = std::string(textureKindName(kind)) + " texture";
-    bool hasFile = false;
+    std::string where = std::string(info->name) + " texture";
     if (peek().kind == Tok::Semi) {
       take();
     } else {
       Seen seen;
       block(where, [&](const Token& key) {
-        const std::string& k = key.text;
-        bool known = k == "color1" || k == "color2" || k == "scale" || k == "strength" || k == "squares" ||
-                     k == "octaves" || k == "file";
-        if (!known) fail(key.loc, "unknown key " + quote(k) + " in " + where);
-        if (!textureKeyApplies(kind, k))
-          fail(key.loc, "'" + k + "' does not apply to " + textureKindName(kind) + " textures");
+        const TextureKey* k = findKindKey(*info, key.text);
+        if (!k && !findTextureKey(key.text)) fail(key.loc, "unknown key " + quote(key.text) + " in " + where);
+        if (!k) fail(key.loc, "'" + key.text + "' does not apply to " + info->name + " textures");
         assign(key, seen, where);
-        if (k == "color1") t.color1 = color();
-        else if (k == "color2") t.color2 = color();
-        else if (k == "scale") t.scale = float(positive("scale"));
-        else if (k == "squares") t.squares = float(positive("squares"));
-        else if (k == "strength") t.strength = float(number());
-        else if (k == "octaves") {
-          FileLoc loc;
-          std::string text;
-          double v = number(&loc, &text);
-          if (!(v >= 1.0 && v <= 16.0 && v == std::floor(v)))
-            fail(loc, "octaves must be a whole number from 1 to 16, got " + text);
-          t.octaves = int(v);
-        } else {  // file
-          Token f = expect(Tok::String, "a file name in quotes");
-          if (f.text.empty()) fail(f.loc, "empty file name");
-          t.imagePath = (fs::path(file_).parent_path() / f.text).lexically_normal().string();
-          checkReadable(st_, f, t.imagePath);
-          t.loc = f.loc;
-          hasFile = true;
-        }
-        semicolon("the value of " + quote(k));
+        textureValue(*k, &t);
+        semicolon("the value of " + quote(key.text));
       });
     }
-    if (kind == TextureKind::Image && !hasFile) fail(kindTok.loc, "image texture needs 'file = \"path\";'");
+    for (const TextureKey& k : info->keys)
+      if (k.type == KeyType::File && t.imagePath.empty())
+        fail(kindTok.loc, std::string(info->name) + " texture needs '" + k.name + " = \"path\";'");
     return t;
+  }
+
+  // The value of texture key k, checked against its row.
+  void textureValue(const TextureKey& k, TextureDesc* t) {
+    if (k.type == KeyType::Colour) {
+      t->*k.colour = color();
+      return;
+    }
+    if (k.type == KeyType::File) {
+      Token f = expect(Tok::String, "a file name in quotes");
+      if (f.text.empty()) fail(f.loc, "empty file name");
+      t->imagePath = (fs::path(file_).parent_path() / f.text).lexically_normal().string();
+      checkReadable(st_, f, t->imagePath);
+      t->loc = f.loc;
+      return;
+    }
+    FileLoc loc;
+    std::string text;
+    double v = number(&loc, &text);
+    if (!inRange(k.range, v)) fail(loc, std::string(k.name) + " must be " + describeRange(k.range) + ", got " + text);
+    if (k.type == KeyType::Whole) t->*k.whole = int(v);
+    else t->*k.number = float(v);
   }
 
   void parseCamera(const Token& kw) {
@@ -583,6 +572,7 @@ Scene parseSceneFile(const std::string& path, const ReadPolicy& policy) {
   // library given by mistake, not an image anyone wants.
   if (scene.spheres.empty() && scene.planes.empty())
     throw SceneError(FileLoc{path, 1, 1}, "nothing to render: the scene has no sphere or plane");
+  checkSceneLimits(scene);
   scene.files.insert(scene.files.begin(), path);
   return scene;
 }

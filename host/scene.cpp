@@ -1,5 +1,7 @@
 #include "scene.h"
 
+#include <algorithm>
+
 std::string formatLoc(const FileLoc& loc, const std::string& message) {
   if (loc.line <= 0) return loc.file + ": " + message;  // about the whole file (cannot open it)
   return loc.file + ":" + std::to_string(loc.line) + ":" + std::to_string(loc.column) + ": " + message;
@@ -13,4 +15,14 @@ Material defaultMaterial() {
   m.specular = glm::vec3(0.3f);
   m.shininess = 32.0f;
   return m;
+}
+
+std::vector<int> usedMaterials(const Scene& scene) {
+  std::vector<int> used;
+  auto note = [&](int m) {
+    if (std::find(used.begin(), used.end(), m) == used.end()) used.push_back(m);
+  };
+  for (const Sphere& s : scene.spheres) note(s.material);
+  for (const Plane& p : scene.planes) note(p.material);
+  return used;
 }

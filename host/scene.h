@@ -25,7 +25,8 @@ struct SceneError : std::runtime_error {
       : std::runtime_error(formatLoc(where, message)), loc(where) {}
 };
 
-// Values match TEX_* in shaders/common.h (checked in gpu_scene.cpp).
+// Values match TEX_* in shaders/common.h (checked in texture_kinds.cpp); each kind's row is in
+// texture_kinds.cpp.
 enum class TextureKind {
   None = 0,
   Image,
@@ -36,6 +37,7 @@ enum class TextureKind {
   Wood,
   Turbulence,
   DTurbulence,
+  Count,  // the number of values
 };
 
 struct TextureDesc {
@@ -114,3 +116,6 @@ struct Scene {
 
 // The material used by objects that name none.
 Material defaultMaterial();
+
+// Materials referenced by objects, in first-use order; -1 stands for the default material.
+std::vector<int> usedMaterials(const Scene& scene);

@@ -1,5 +1,6 @@
-// Texture kinds: names, defaults, and which mapping each one uses.
-// (The CPU double-precision evaluation used as a test oracle lives here too.)
+// The texture kinds evaluated on the CPU in double precision: the tests' oracle of
+// shaders/kinds/*.glsl, written from docs/textures.md independently of the GPU path (which
+// never includes this file). The kinds' names, keys and defaults are in texture_kinds.h.
 #pragma once
 
 #include "mapping.h"
@@ -7,20 +8,6 @@
 
 #include <glm/vec3.hpp>
 
-#include <string>
-
-// The scene-file name of a kind ("checker", "solid_checker", ...).
-const char* textureKindName(TextureKind kind);
-
-// Looks up a scene-file name; false if it names no kind.
-bool textureKindFromName(const std::string& name, TextureKind* kind);
-
-// Solid (3D) kinds take (u, v, w): (n+1)/2 on a sphere, p/tex_scale on a plane.
-// The others (image, checker) take the 2D (u, v) of the shape's mapping.
-bool isSolidTexture(TextureKind kind);
-
-// The parameters a kind starts from before the scene file overrides them.
-TextureDesc defaultTexture(TextureKind kind);
 
 // --- CPU double-precision evaluation: the oracle of shaders/textures.glsl ---
 // The same formulas as the GPU (docs/textures.md), with q = solid * scale and

@@ -1,5 +1,7 @@
 #include "viewer.h"
 
+#include "scene_limits.h"
+
 #include "exit_status.h"
 #include "gpu_scene.h"
 #include "image_io.h"
@@ -73,6 +75,7 @@ struct ViewerState {
 struct ImageLimits {
   PackOptions pack;  // every material (a key switches to it), mip chains for the filtered kernel
   uint32_t maxImageDimension2D = 0, maxImageArrayLayers = 0;  // the device's
+  bool lavapipe = false;  // its driver's loop limit applies (scene_limits.h)
 };
 
 int materialIndex(const Scene& scene, const char* name) {
@@ -188,6 +191,7 @@ void reloadIfChanged(ViewerState& state, const std::string& path, const ReadPoli
   try {
     Scene scene = parseSceneFile(path, policy);
     times = fileTimes(scene);
+    if (limits.lavapipe) checkLoopLimit(scene);
     GpuScene gpuScene = buildGpuScene(scene, 1, 1, limits.pack);
     std::string over = imagesOverDeviceLimits(gpuScene.images, limits.maxImageDimension2D, limits.maxImageArrayLayers);
     if (!over.empty()) throw std::runtime_error(over);
@@ -334,6 +338,7 @@ int runViewer(const RenderOptions& options) {
     deviceOptions.instanceExtensions = windowInstanceExtensions();
     deviceOptions.presentSupport = windowPresentSupport;
     createRenderer(renderer, deviceOptions);
+    if (renderer.device.lavapipe) checkLoopLimit(state.scene);
     createSwapchain(window, renderer.device);
     renderer.displayBgra = windowBgra(window);
 
@@ -417,7 +422,7 @@ int runViewer(const RenderOptions& options) {
       if (now - lastTitle > std::chrono::milliseconds(250)) {  // also the reload poll
         const VkPhysicalDeviceLimits& device = renderer.device.properties.limits;
         reloadIfChanged(state, options.scene, ReadPolicy{options.allowRead}, times,
-                        {pack, device.maxImageDimension2D, device.maxImageArrayLayers});
+                        {pack, device.maxImageDimension2D, device.maxImageArrayLayers, renderer.device.lavapipe});
         double frameMs = stats.frameMs.empty() ? 0.0 : stats.frameMs.back();
         glfwSetWindowTitle(window.window, title(state, samples, target, frameMs, renderer.lastFrameMs).c_str());
         lastTitle = now;

@@ -45,7 +45,8 @@ using uvec4 = glm::uvec4;
 #define MAX_PLANES 256     // 256 * 96 bytes = 24 KiB
 #define MAX_LIGHTS 256     // 256 * 32 bytes = 8 KiB
 
-// Texture kinds (Material.textureKind). Bit (1 << kind) of SPEC_SPHERE_TEXTURE_KINDS and
+// Texture kinds (Material.textureKind; one row each in host/texture_kinds.cpp, GLSL in
+// shaders/kinds/). Bit (1 << kind) of SPEC_SPHERE_TEXTURE_KINDS and
 // SPEC_PLANE_TEXTURE_KINDS says the kind is on a sphere or a plane; absent kinds compile to
 // nothing.
 #define TEX_NONE 0
@@ -58,6 +59,9 @@ using uvec4 = glm::uvec4;
 #define TEX_TURBULENCE 7
 #define TEX_DTURBULENCE 8
 #define TEX_KIND_COUNT 9
+// The kinds that read the 2D (u, v) of the shape's mapping; the others read the solid coordinate
+// (each kind's row in host/texture_kinds.cpp says which; a test checks that the two agree).
+#define TEX_2D_KINDS ((1u << TEX_IMAGE) | (1u << TEX_CHECKER))
 
 // Specialisation constant ids.
 #define SPEC_SPHERE_TEXTURE_KINDS 0  // uint bit mask of the TEX_* kinds on spheres

@@ -111,8 +111,7 @@ uint lightCount() { return LIGHT_COUNT == COUNT_FROM_FRAME ? frame.lightCount : 
 // The sphere's latitude/longitude (two atans per hit) only for kinds that read it, and the
 // coordinate debug output. (No || here: glslang turns it into branches that are invalid
 // SPIR-V outside a function.)
-const bool SPHERE_LAT_LONG = ((SPHERE_TEXTURE_KINDS & ((1u << TEX_IMAGE) | (1u << TEX_CHECKER))) |
-                              uint(OUTPUT_MODE == OUTPUT_COORDS)) != 0u;
+const bool SPHERE_LAT_LONG = ((SPHERE_TEXTURE_KINDS & TEX_2D_KINDS) | uint(OUTPUT_MODE == OUTPUT_COORDS)) != 0u;
 
 #include "noise.glsl"
 #include "mapping.glsl"
@@ -188,7 +187,7 @@ vec4 debugOutput(vec3 origin, vec2 film) {
   Material m = materialAt(s.material);
   if (OUTPUT_MODE == OUTPUT_ALBEDO)
     return vec4(albedoAt(hit, s, m, origin, film, 1.0), float(hit.kind));
-  bool solid = m.textureKind != TEX_IMAGE && m.textureKind != TEX_CHECKER && m.textureKind != TEX_NONE;
+  bool solid = m.textureKind != TEX_NONE && ((TEX_2D_KINDS >> m.textureKind) & 1u) == 0u;
   return vec4(solid ? s.tc.solid : vec3(s.tc.uv, 0.0), float(hit.kind));
 }
 #endif

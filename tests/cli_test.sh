@@ -6,6 +6,7 @@ set -u
 source "$(dirname "$0")/cli_checks.sh"
 
 expect help 0 'usage: raytex render SCENE' -- "$raytex" --help
+expect help-kinds 0 'texture kinds: image, checker, solid_checker, .* or dturbulence' -- "$raytex" --help
 expect no-args 2 '^raytex: missing command' -- "$raytex"
 expect unknown-command 2 "unknown command 'draw'" -- "$raytex" draw x
 expect no-scene 2 'render needs a scene file' -- "$raytex" render
@@ -164,6 +165,20 @@ for n in 54 1; do
   "$raytex" render "$tmp/lights$n.cfg" --width 32 --height 24 --spp 4 -o "$tmp/lights$n.png" >/dev/null 2>&1
 done
 check loop-limit-per-sample cmp -s "$tmp/lights54.png" "$tmp/lights1.png"
+# Over the limit in one sample (215 lights, 300 objects): refused on lavapipe after device
+# selection, at the first light over; the CPU reference has no such limit.
+manyLights 214 >"$tmp/lights215.cfg"
+expect loop-limit-lavapipe 2 "^$tmp/lights215.cfg:216:1: the scene has 215 lights and 300 objects: .* the lavapipe driver runs\$" \
+  -- "$raytex" render "$tmp/lights215.cfg" --width 8 --height 6 -o "$tmp/lights215.png"
+expect loop-limit-reference 0 '' -- "$raytex" render "$tmp/lights215.cfg" --reference --width 8 --height 6 \
+  -o "$tmp/lights215-reference.png"
+# Object counts are the scene model's: the same error from the GPU path and the reference.
+for _ in $(seq 1025); do echo 'sphere { radius = 1; }'; done >"$tmp/spheres1025.cfg"
+for command in render "render --reference"; do
+  # shellcheck disable=SC2086  # the command's words
+  expect "sphere-limit-${command// /-}" 2 "^$tmp/spheres1025.cfg:1025:1: the scene has 1025 spheres; raytex renders at most 1024\$" \
+    -- "$raytex" $command "$tmp/spheres1025.cfg" --width 8 --height 6 -o "$tmp/spheres1025.png"
+done
 
 # Image files are checked from their headers before anything is decoded: a budget of 1 MiB
 # refuses earth.jpg (2048x1024, 8 MiB) on every command that loads images, at its `file` value.

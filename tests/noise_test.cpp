@@ -1,5 +1,6 @@
 // Improved Perlin noise, its analytic gradient and the turbulence sums (host/noise.cpp).
 #include "noise.h"
+#include "noise_permutation.h"
 
 #include "common.h"
 

@@ -1,7 +1,7 @@
 // Tests of the .cfg scene parser (host/parser.cpp): the course files, syntax, every error
 // with its exact file:line:col, includes, and a robustness run over mutated input.
 #include "parser.h"
-#include "texture.h"
+#include "texture_kinds.h"
 
 #include <gtest/gtest.h>
 

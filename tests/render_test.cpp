@@ -13,6 +13,7 @@
 #include "reference_render.h"
 #include "renderer.h"
 #include "texture.h"
+#include "texture_kinds.h"
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>

@@ -10,6 +10,7 @@
 #include "reference.h"
 #include "reference_render.h"
 #include "texture.h"
+#include "texture_kinds.h"
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>

@@ -1,5 +1,6 @@
 // Texture kinds: names, defaults and the CPU reference colours (host/texture.cpp).
 #include "texture.h"
+#include "texture_kinds.h"
 
 #include "mapping.h"
 
@@ -40,21 +41,6 @@ double floorChecker(float squares, double s, double x, double z) {
 }
 
 }  // namespace
-
-TEST(TextureNames, RoundTrip) {
-  for (TextureKind k : kProcedural) {
-    TextureKind back = TextureKind::None;
-    ASSERT_TRUE(textureKindFromName(textureKindName(k), &back));
-    EXPECT_EQ(back, k);
-  }
-  TextureKind k = TextureKind::None;
-  EXPECT_TRUE(textureKindFromName("image", &k));
-  EXPECT_EQ(k, TextureKind::Image);
-  EXPECT_FALSE(textureKindFromName("checkers", &k));
-  EXPECT_FALSE(isSolidTexture(TextureKind::Checker));
-  EXPECT_FALSE(isSolidTexture(TextureKind::Image));
-  EXPECT_TRUE(isSolidTexture(TextureKind::Wood));
-}
 
 TEST(TextureChecker, ParityByHand) {
   const TextureDesc t = checker(2.0f);

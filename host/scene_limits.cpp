@@ -1,0 +1,50 @@
+#include "scene_limits.h"
+
+#include "common.h"
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+namespace {
+
+// The first object that uses `material`.
+FileLoc firstUse(const Scene& scene, int material) {
+  for (const Sphere& o : scene.spheres)
+    if (o.material == material) return o.loc;
+  for (const Plane& o : scene.planes)
+    if (o.material == material) return o.loc;
+  return scene.path.empty() ? FileLoc{} : FileLoc{scene.path, 1, 1};
+}
+
+template <typename Items>
+void checkCount(const Items& items, size_t max, const char* what) {
+  if (items.size() > max)
+    throw SceneError(items[max].loc, "the scene has " + std::to_string(items.size()) + " " + what +
+                                         "; raytex renders at most " + std::to_string(max));
+}
+
+}  // namespace
+
+void checkSceneLimits(const Scene& scene) {
+  checkCount(scene.spheres, MAX_SPHERES, "spheres");
+  checkCount(scene.planes, MAX_PLANES, "planes");
+  checkCount(scene.lights, MAX_LIGHTS, "lights");
+  std::vector<int> used = usedMaterials(scene);
+  if (used.size() > MAX_MATERIALS)
+    throw SceneError(firstUse(scene, used[MAX_MATERIALS]),
+                     "the scene's objects use more than " + std::to_string(MAX_MATERIALS) + " materials");
+}
+
+void checkLoopLimit(const Scene& scene) {
+  const size_t objects = scene.spheres.size() + scene.planes.size();
+  const uint64_t iterations = loopIterationsPerSample(scene.lights.size(), objects);
+  if (iterations <= kMaxLoopIterations) return;
+  // With n lights, (n + 1) (objects + 1) passes the limit from n = limit / (objects + 1) on.
+  size_t first = std::min(std::max<size_t>(kMaxLoopIterations / (objects + 1), 1), scene.lights.size()) - 1;
+  throw SceneError(scene.lights[first].loc,
+                   "the scene has " + std::to_string(scene.lights.size()) + " lights and " + std::to_string(objects) +
+                       " objects: (lights + 1) x (objects + 1) = " + std::to_string(iterations) +
+                       " intersection tests per sample, more than the " + std::to_string(kMaxLoopIterations) +
+                       " the lavapipe driver runs");
+}

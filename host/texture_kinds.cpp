@@ -1,0 +1,235 @@
+#include "texture_kinds.h"
+
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+static_assert(int(TextureKind::None) == TEX_NONE && int(TextureKind::Image) == TEX_IMAGE &&
+                  int(TextureKind::Checker) == TEX_CHECKER && int(TextureKind::SolidChecker) == TEX_SOLID_CHECKER &&
+                  int(TextureKind::Noise) == TEX_NOISE && int(TextureKind::Marble) == TEX_MARBLE &&
+                  int(TextureKind::Wood) == TEX_WOOD && int(TextureKind::Turbulence) == TEX_TURBULENCE &&
+                  int(TextureKind::DTurbulence) == TEX_DTURBULENCE && int(TextureKind::Count) == TEX_KIND_COUNT,
+              "TextureKind must match TEX_* in common.h");
+
+namespace {
+
+// --- The keys, each defined once and shared by the kinds that take it ---
+
+KeyRange positive() { return {0.0, 1e300, true, false, false}; }
+KeyRange wholeFrom(double lo, double hi) { return {lo, hi, false, false, true}; }
+
+TextureKey colourKey(const char* name, MaterialSlot slot, glm::vec3 TextureDesc::*field, const char* meaning) {
+  TextureKey k{name, KeyType::Colour, slot, {}, meaning};
+  k.colour = field;
+  return k;
+}
+TextureKey numberKey(const char* name, MaterialSlot slot, KeyRange range, float TextureDesc::*field,
+                     const char* meaning) {
+  TextureKey k{name, KeyType::Number, slot, range, meaning};
+  k.number = field;
+  return k;
+}
+TextureKey wholeKey(const char* name, MaterialSlot slot, KeyRange range, int TextureDesc::*field, const char* meaning) {
+  TextureKey k{name, KeyType::Whole, slot, range, meaning};
+  k.whole = field;
+  return k;
+}
+
+const TextureKey kColor1 = colourKey("color1", MaterialSlot::Color1, &TextureDesc::color1, "the colour at blend 0");
+const TextureKey kColor2 = colourKey("color2", MaterialSlot::Color2, &TextureDesc::color2, "the colour at blend 1");
+const TextureKey kScale =
+    numberKey("scale", MaterialSlot::ParamX, positive(), &TextureDesc::scale, "frequency multiplier of the coordinate");
+const TextureKey kStrength =
+    numberKey("strength", MaterialSlot::ParamY, KeyRange{}, &TextureDesc::strength, "amount of turbulence");
+const TextureKey kSquares =
+    numberKey("squares", MaterialSlot::ParamZ, positive(), &TextureDesc::squares, "checks per side of one tile");
+const TextureKey kOctaves =
+    wholeKey("octaves", MaterialSlot::Octaves, wholeFrom(1, 16), &TextureDesc::octaves, "noise octaves summed");
+const TextureKey kFile{"file", KeyType::File, MaterialSlot::ImageFile, {},
+                       "PNG or JPEG file, relative to the scene file that names it"};
+
+TextureDesc defaults(TextureKind kind, glm::vec3 color1, glm::vec3 color2) {
+  TextureDesc t;
+  t.kind = kind;
+  t.color1 = color1;
+  t.color2 = color2;
+  return t;
+}
+TextureDesc noiseDefaults(TextureKind kind, glm::vec3 color1, glm::vec3 color2, float scale, float strength,
+                          int octaves) {
+  TextureDesc t = defaults(kind, color1, color2);
+  t.scale = scale;
+  t.strength = strength;
+  t.octaves = octaves;
+  return t;
+}
+
+double noPeriod(const TextureDesc&) { return 0.0; }
+// The parity of floor(solid * squares) summed over the axes repeats every 2 / squares.
+double solidCheckerPeriod(const TextureDesc& t) { return 2.0 / double(t.squares); }
+// The noise lattice repeats every 256 (marble's sine every 2, which divides it).
+double latticePeriod(const TextureDesc& t) { return 256.0 / double(t.scale); }
+
+// --- The kinds, in TEX_* order ---
+std::vector<TextureKindInfo> makeKinds() {
+  using K = TextureKind;
+  const std::vector<TextureKey> noiseKeys = {kColor1, kColor2, kScale, kStrength, kOctaves};
+  TextureDesc checker = defaults(K::Checker, glm::vec3(0.9f), glm::vec3(0.1f));
+  checker.squares = 2.0f;
+  TextureDesc solidChecker = defaults(K::SolidChecker, glm::vec3(0.9f, 0.1f, 0.1f), glm::vec3(0.9f));
+  solidChecker.squares = 4.0f;
+  TextureDesc noise = defaults(K::Noise, glm::vec3(0.05f, 0.1f, 0.4f), glm::vec3(0.9f, 0.9f, 0.8f));
+  noise.scale = 8.0f;
+  const glm::vec3 turbulence1(0.95f, 0.85f, 0.6f), turbulence2(0.3f, 0.1f, 0.05f);
+  return {
+      {K::Image, "image", false, false, {kFile}, defaults(K::Image, glm::vec3(1.0f), glm::vec3(0.0f)), noPeriod},
+      {K::Checker, "checker", false, false, {kColor1, kColor2, kSquares}, checker, noPeriod},
+      {K::SolidChecker, "solid_checker", true, false, {kColor1, kColor2, kSquares}, solidChecker, solidCheckerPeriod},
+      {K::Noise, "noise", true, true, {kColor1, kColor2, kScale}, noise, latticePeriod},
+      {K::Marble, "marble", true, true, noiseKeys,
+       noiseDefaults(K::Marble, {0.9f, 0.88f, 0.85f}, {0.15f, 0.12f, 0.2f}, 4.0f, 6.0f, 6), latticePeriod},
+      // Wood's rings are not periodic.
+      {K::Wood, "wood", true, true, noiseKeys,
+       noiseDefaults(K::Wood, {0.75f, 0.5f, 0.25f}, {0.35f, 0.18f, 0.07f}, 8.0f, 0.25f, 4), noPeriod},
+      {K::Turbulence, "turbulence", true, true, noiseKeys,
+       noiseDefaults(K::Turbulence, turbulence1, turbulence2, 6.0f, 1.25f, 6), latticePeriod},
+      // Derivative turbulence damps octaves on slopes, so it needs more gain for the same contrast.
+      {K::DTurbulence, "dturbulence", true, true, noiseKeys,
+       noiseDefaults(K::DTurbulence, turbulence1, turbulence2, 6.0f, 2.5f, 6), latticePeriod},
+  };
+}
+
+std::string number(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
+
+std::string colourText(glm::vec3 c) {
+  if (c.x == c.y && c.y == c.z) return "(" + number(c.x) + ", " + number(c.x) + ", " + number(c.x) + ")";
+  return "(" + number(c.x) + ", " + number(c.y) + ", " + number(c.z) + ")";
+}
+
+std::string defaultText(const TextureKey& key, const TextureDesc& d) {
+  switch (key.type) {
+    case KeyType::Colour: return "`" + colourText(d.*key.colour) + "`";
+    case KeyType::Number: return "`" + number(d.*key.number) + "`";
+    case KeyType::Whole: return "`" + number(d.*key.whole) + "`";
+    case KeyType::File: return "required";
+  }
+  return "";
+}
+
+const char* typeText(KeyType type) {
+  switch (type) {
+    case KeyType::Colour: return "colour";
+    case KeyType::Number: return "number";
+    case KeyType::Whole: return "number";
+    case KeyType::File: return "string";
+  }
+  return "";
+}
+
+std::string validText(const TextureKey& key) {
+  if (key.type == KeyType::Colour) return "components >= 0";
+  if (key.type == KeyType::File) return "not empty, at most 4096 bytes";
+  return describeRange(key.range);
+}
+
+}  // namespace
+
+const std::vector<TextureKindInfo>& textureKinds() {
+  static const std::vector<TextureKindInfo> kinds = makeKinds();
+  return kinds;
+}
+
+const TextureKindInfo& textureKindInfo(TextureKind kind) {
+  for (const TextureKindInfo& info : textureKinds())
+    if (info.kind == kind) return info;
+  throw std::invalid_argument("textureKindInfo: no row for texture kind " + std::to_string(int(kind)));
+}
+
+const TextureKindInfo* findTextureKind(const std::string& name) {
+  for (const TextureKindInfo& info : textureKinds())
+    if (name == info.name) return &info;
+  return nullptr;
+}
+
+const TextureKey* findKindKey(const TextureKindInfo& info, const std::string& name) {
+  for (const TextureKey& key : info.keys)
+    if (name == key.name) return &key;
+  return nullptr;
+}
+
+const TextureKey* findTextureKey(const std::string& name) {
+  for (const TextureKindInfo& info : textureKinds())
+    if (const TextureKey* key = findKindKey(info, name)) return key;
+  return nullptr;
+}
+
+TextureDesc defaultTexture(TextureKind kind) {
+  return kind == TextureKind::None ? TextureDesc{} : textureKindInfo(kind).defaults;
+}
+
+bool isSolidTexture(TextureKind kind) { return kind != TextureKind::None && textureKindInfo(kind).solid; }
+
+const char* textureKindName(TextureKind kind) {
+  for (const TextureKindInfo& info : textureKinds())
+    if (info.kind == kind) return info.name;
+  return "none";
+}
+
+std::string textureKindList() {
+  std::string list;
+  const auto& kinds = textureKinds();
+  for (size_t i = 0; i < kinds.size(); ++i)
+    list += (i == 0 ? "" : i + 1 == kinds.size() ? " or " : ", ") + std::string(kinds[i].name);
+  return list;
+}
+
+std::string describeRange(const KeyRange& r) {
+  if (r.whole) return "a whole number from " + number(r.lo) + " to " + number(r.hi);
+  std::string lo = r.lo > -1e300 ? (r.loOpen ? "> " : ">= ") + number(r.lo) : "";
+  std::string hi = r.hi < 1e300 ? (r.hiOpen ? "< " : "<= ") + number(r.hi) : "";
+  if (lo.empty() && hi.empty()) return "any";
+  return lo.empty() ? hi : hi.empty() ? lo : lo + " and " + hi;
+}
+
+bool inRange(const KeyRange& r, double v) {
+  bool aboveLo = r.loOpen ? v > r.lo : v >= r.lo;
+  bool belowHi = r.hiOpen ? v < r.hi : v <= r.hi;
+  return aboveLo && belowHi && (!r.whole || v == std::floor(v));
+}
+
+std::string textureKindsMarkdown() {
+  std::string table = "| KIND | coordinate | key | type | default | valid | meaning |\n|---|---|---|---|---|---|---|\n";
+  for (const TextureKindInfo& info : textureKinds()) {
+    for (size_t i = 0; i < info.keys.size(); ++i) {
+      const TextureKey& key = info.keys[i];
+      std::string kind = i == 0 ? "`" + std::string(info.name) + "`" : "";
+      std::string coordinate = i == 0 ? (info.solid ? "3D" : "2D") : "";
+      table += "| " + kind + " | " + coordinate + " | `" + key.name + "` | " + typeText(key.type) + " | " +
+               defaultText(key, info.defaults) + " | " + validText(key) + " | " + key.meaning + " |\n";
+    }
+  }
+  return table;
+}
+
+void packTexture(const TextureDesc& texture, gpu::Material* g) {
+  g->textureKind = uint32_t(texture.kind);
+  g->octaves = 1;
+  if (texture.kind == TextureKind::None) return;
+  for (const TextureKey& key : textureKindInfo(texture.kind).keys) {
+    float value = key.number ? texture.*key.number : key.whole ? float(texture.*key.whole) : 0.0f;
+    switch (key.slot) {
+      case MaterialSlot::Color1: g->color1 = glm::vec4(texture.*key.colour, 0.0f); break;
+      case MaterialSlot::Color2: g->color2 = glm::vec4(texture.*key.colour, 0.0f); break;
+      case MaterialSlot::ParamX: g->params.x = value; break;
+      case MaterialSlot::ParamY: g->params.y = value; break;
+      case MaterialSlot::ParamZ: g->params.z = value; break;
+      case MaterialSlot::ParamW: g->params.w = value; break;
+      case MaterialSlot::Octaves: g->octaves = uint32_t(texture.*key.whole); break;
+      case MaterialSlot::ImageFile: break;  // the image's layer: set by the caller
+    }
+  }
+}
