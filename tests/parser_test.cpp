@@ -506,8 +506,7 @@ TEST(ParserErrors, Textures) {
   EXPECT_EQ(errorOf("material m { texture = solid_checker { scale = 2; } }"),
             "t.cfg:1:40: 'scale' does not apply to solid_checker textures");
   EXPECT_EQ(errorOf("material m { texture = checkr; }"),
-            "t.cfg:1:24: unknown texture kind 'checkr' (expected image, checker, solid_checker, noise, marble, "
-            "wood, turbulence or dturbulence)");
+            "t.cfg:1:24: unknown texture kind 'checkr' (expected " + textureKindList() + ")");
   EXPECT_EQ(errorOf("material m { texture = image { } }"), "t.cfg:1:24: image texture needs 'file = \"path\";'");
   EXPECT_EQ(errorOf("material m { texture = image; }"), "t.cfg:1:24: image texture needs 'file = \"path\";'");
   EXPECT_EQ(errorOf("material m { texture = image { file = \"\"; } }"), "t.cfg:1:39: empty file name");
