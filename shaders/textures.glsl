@@ -1,6 +1,6 @@
 // The texture colour used as the diffuse coefficient (course notes: "the colour the
 // texture returns is used as the diffuse reflection coefficient"), picked by kind in one
-// switch. Each kind lives in shaders/kinds/<kind>.glsl with its point-sampled evaluation
+// dispatch, textureColor. Each kind lives in shaders/kinds/<kind>.glsl with its point-sampled evaluation
 // (<kind>Point) and, in the box-filtered module, its footprint-filtered one (<kind>Box); its
 // host row is in host/texture_kinds.cpp and its double-precision oracle in host/texture.cpp.
 // Formulas: docs/textures.md. Adding a kind: docs/adding-a-texture.md.
@@ -35,34 +35,26 @@
 #else
 #define TEXTURE_EVAL(name) name##Point(m, tc)
 #endif
-// A case of the dispatch: kinds that return a blend factor t, colour = mix(color1, color2, t).
+// A case of the dispatch for a kind that returns a blend factor t: colour = mix(color1, color2, t).
+// Guarded cases in a chain, not a GLSL switch: lavapipe ran the switch's box kernel 1.5 % slower
+// (docs/performance.md, "One dispatch per texture kind").
 #define TEXTURE_BLEND_CASE(kind, name) \
-  case kind:                           \
-    if (TEXTURE_KIND_PRESENT(kind)) t = TEXTURE_EVAL(name); \
-    break;
+  if (TEXTURE_KIND_PRESENT(kind) && m.textureKind == (kind)) return mix(m.color1.rgb, m.color2.rgb, TEXTURE_EVAL(name));
 
 #ifdef RAYTEX_FILTER_BOX
 vec3 textureColor(Material m, TexCoord tc, Footprint fp) {
 #else
 vec3 textureColor(Material m, TexCoord tc) {
 #endif
-  float t = -1.0;  // stays < 0 for untextured materials
-  switch (m.textureKind) {
-    case TEX_IMAGE:
-      if (TEXTURE_KIND_PRESENT(TEX_IMAGE)) return TEXTURE_EVAL(image);
-      break;
-    TEXTURE_BLEND_CASE(TEX_CHECKER, checker)
-    TEXTURE_BLEND_CASE(TEX_SOLID_CHECKER, solidChecker)
-    TEXTURE_BLEND_CASE(TEX_NOISE, noise)
-    TEXTURE_BLEND_CASE(TEX_MARBLE, marble)
-    TEXTURE_BLEND_CASE(TEX_WOOD, wood)
-    TEXTURE_BLEND_CASE(TEX_TURBULENCE, turbulence)
-    TEXTURE_BLEND_CASE(TEX_DTURBULENCE, dturbulence)
-    default:
-      break;
-  }
-  if (t < -0.5) return m.diffuse.rgb;  // TEX_NONE (far from any rounded blend value)
-  return mix(m.color1.rgb, m.color2.rgb, t);
+  if (TEXTURE_KIND_PRESENT(TEX_IMAGE) && m.textureKind == TEX_IMAGE) return TEXTURE_EVAL(image);
+  TEXTURE_BLEND_CASE(TEX_CHECKER, checker)
+  TEXTURE_BLEND_CASE(TEX_SOLID_CHECKER, solidChecker)
+  TEXTURE_BLEND_CASE(TEX_NOISE, noise)
+  TEXTURE_BLEND_CASE(TEX_MARBLE, marble)
+  TEXTURE_BLEND_CASE(TEX_WOOD, wood)
+  TEXTURE_BLEND_CASE(TEX_TURBULENCE, turbulence)
+  TEXTURE_BLEND_CASE(TEX_DTURBULENCE, dturbulence)
+  return m.diffuse.rgb;  // TEX_NONE
 }
 
 #ifdef RAYTEX_FILTER_BOX
@@ -73,26 +65,20 @@ bool hasClosedFormFilter(uint kind) { return ((TEXTURE_CLOSED_FORM_KINDS >> kind
 
 // The box-filtered blend factor of a closed-form kind.
 float filteredBlend(Material m, TexCoord tc, Footprint fp) {
-  float t = 0.0;
-  switch (m.textureKind) {
-    TEXTURE_BLEND_CASE(TEX_CHECKER, checker)
-    TEXTURE_BLEND_CASE(TEX_SOLID_CHECKER, solidChecker)
-    default:
-      break;
-  }
-  return t;
+  if (TEXTURE_KIND_PRESENT(TEX_CHECKER) && m.textureKind == TEX_CHECKER) return checkerBox(m, tc, fp);
+  if (TEXTURE_KIND_PRESENT(TEX_SOLID_CHECKER) && m.textureKind == TEX_SOLID_CHECKER) return solidCheckerBox(m, tc, fp);
+  return 0.0;
 }
 
-// How many cells of a closed-form kind the footprint step (duv, ds) spans.
+// How many cells of a closed-form kind the footprint step (duv, ds) spans. Selects, not
+// branches: each is a few operations, and a branch costs the whole SIMD group on lavapipe.
+#define TEXTURE_CELLS_CASE(kind, name) \
+  if (TEXTURE_KIND_PRESENT(kind)) cells = mix(cells, name##Cells(m, duv, ds), m.textureKind == (kind));
 float filteredCells(Material m, vec2 duv, vec3 ds) {
-  switch (m.textureKind) {
-    case TEX_CHECKER:
-      return checkerChecks(m, duv, ds);
-    case TEX_SOLID_CHECKER:
-      return solidCheckerChecks(m, duv, ds);
-    default:
-      return 0.0;
-  }
+  float cells = 0.0;
+  TEXTURE_CELLS_CASE(TEX_CHECKER, checker)
+  TEXTURE_CELLS_CASE(TEX_SOLID_CHECKER, solidChecker)
+  return cells;
 }
 #endif  // RAYTEX_FILTER_BOX
 

@@ -28,7 +28,7 @@ float checkerBox(Material m, TexCoord tc, Footprint fp) {
 }
 
 // Checks a footprint step (duv, ds) spans: where a long footprint is split into probes (box).
-float checkerChecks(Material m, vec2 duv, vec3 ds) { return length(duv) * max(floor(m.params.z + 0.5), 1.0); }
+float checkerCells(Material m, vec2 duv, vec3 ds) { return length(duv) * max(floor(m.params.z + 0.5), 1.0); }
 #endif  // RAYTEX_FILTER_BOX
 
 #endif  // RAYTEX_KIND_CHECKER_GLSL

@@ -16,7 +16,7 @@ float solidCheckerBox(Material m, TexCoord tc, Footprint fp) {
 }
 
 // Checks a footprint step (duv, ds) spans: where a long footprint is split into probes (box).
-float solidCheckerChecks(Material m, vec2 duv, vec3 ds) { return length(ds) * m.params.z; }
+float solidCheckerCells(Material m, vec2 duv, vec3 ds) { return length(ds) * m.params.z; }
 #endif  // RAYTEX_FILTER_BOX
 
 #endif  // RAYTEX_KIND_SOLID_CHECKER_GLSL
