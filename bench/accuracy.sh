@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# The speed-accuracy chart: renders the course scene's textures and the horizon scene with
-# every method and sample count, times them on the GPU and measures their error against
-# the float64 reference, then draws docs/accuracy.png and writes docs/accuracy.csv.
+# The speed-accuracy chart: renders the course scene's textures, the horizon scene and the
+# bricks scene with every method and sample count, times them on the GPU and measures their
+# error against the float64 reference, then draws docs/accuracy.png and writes docs/accuracy.csv.
 # Usage: bench/accuracy.sh [WIDTH HEIGHT RUNS]   (default 160 120 5; needs build/ and
 #        python3-matplotlib, python3-skimage, python3-numpy from Debian)
 set -euo pipefail
@@ -19,6 +19,6 @@ for material in aSolidChecker aMarble anImage; do
   scripts/course-scene.sh "$material" >"$scene"
   scenes+=("$material=$scene")
 done
-scenes+=("horizon=scenes/horizon.cfg")
+scenes+=("horizon=scenes/horizon.cfg" "bricks=scenes/bricks.cfg")
 build/raytex_bench_accuracy "$out" "$width" "$height" "$runs" "${scenes[@]}"
 /usr/bin/python3 bench/accuracy_chart.py "$out/accuracy.csv" docs/accuracy.png docs/accuracy.csv

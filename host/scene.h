@@ -37,6 +37,7 @@ enum class TextureKind {
   Wood,
   Turbulence,
   DTurbulence,
+  Bricks,
   Count,  // the number of values
 };
 
@@ -48,6 +49,8 @@ struct TextureDesc {
   float strength = 1.0f;  // turbulence amount (marble, wood)
   float squares = 2.0f;   // checks per side of one texture tile (checker, solid_checker)
   int octaves = 1;        // noise octaves (turbulence-based kinds)
+  int columns = 4;        // bricks per tile along u (bricks)
+  float mortar = 0.1f;    // joint width as a fraction of a brick's height (bricks)
   std::string imagePath;  // image: resolved relative to the scene file that names it
   FileLoc loc;            // where the texture was given, for image load errors
 };

@@ -56,6 +56,19 @@ double turbulenceReference(const TextureDesc& t, const TexCoordD& tc) {
   return clamp01(double(t.strength) * turbulence(tc.solid * double(t.scale), t.octaves));
 }
 
+// Running bond: `columns` bricks per tile along u, twice as many rows along v; odd rows shifted
+// half a brick towards +u; joints `mortar` brick heights wide, centred on the brick edges.
+double bricksReference(const TextureDesc& t, const TexCoordD& tc) {
+  const double columns = double(t.columns), rows = 2.0 * columns, mortar = double(t.mortar);
+  const double v = (tc.tile.y + tc.uv.y) * rows;
+  const double row = std::floor(v);
+  const double u = (tc.tile.x + tc.uv.x) * columns - 0.5 * parity(row);
+  const double fu = u - std::floor(u), fv = v - row;
+  // A joint is mortar / rows wide in v and in u: mortar brick heights, mortar / 2 brick widths.
+  const bool joint = std::fmin(fv, 1.0 - fv) < 0.5 * mortar || std::fmin(fu, 1.0 - fu) < 0.25 * mortar;
+  return joint ? 1.0 : 0.0;
+}
+
 double dturbulenceReference(const TextureDesc& t, const TexCoordD& tc) {
   return clamp01(double(t.strength) * dturbulence(tc.solid * double(t.scale), t.octaves));
 }
@@ -70,6 +83,7 @@ double textureBlendReference(const TextureDesc& texture, const TexCoordD& tc) {
     case TextureKind::Wood: return woodReference(texture, tc);
     case TextureKind::Turbulence: return turbulenceReference(texture, tc);
     case TextureKind::DTurbulence: return dturbulenceReference(texture, tc);
+    case TextureKind::Bricks: return bricksReference(texture, tc);
     default: break;
   }
   throw std::invalid_argument(std::string("textureBlendReference: no CPU reference for texture kind ") +

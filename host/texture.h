@@ -22,6 +22,9 @@
 //                  t = fract(g)^2
 //   turbulence     t = strength * turbulence(q, octaves)
 //   dturbulence    t = strength * dturbulence(q, octaves)
+//   bricks         U = (tile.x + u) C, V = (tile.y + v) 2C (C = columns), row = floor(V),
+//                  x = U - (row odd ? 1/2 : 0); t = 1 (mortar) where fract(V) is within
+//                  mortar/2 of a whole number or fract(x) within mortar/4, else 0
 
 // The blend factor t in [0,1] between color1 (0) and color2 (1) of a procedural kind
 // (the checkers give exactly 0 or 1). Throws std::invalid_argument for None and Image.

@@ -8,12 +8,13 @@ static_assert(int(TextureKind::None) == TEX_NONE && int(TextureKind::Image) == T
                   int(TextureKind::Checker) == TEX_CHECKER && int(TextureKind::SolidChecker) == TEX_SOLID_CHECKER &&
                   int(TextureKind::Noise) == TEX_NOISE && int(TextureKind::Marble) == TEX_MARBLE &&
                   int(TextureKind::Wood) == TEX_WOOD && int(TextureKind::Turbulence) == TEX_TURBULENCE &&
-                  int(TextureKind::DTurbulence) == TEX_DTURBULENCE && int(TextureKind::Count) == TEX_KIND_COUNT,
+                  int(TextureKind::DTurbulence) == TEX_DTURBULENCE && int(TextureKind::Bricks) == TEX_BRICKS &&
+                  int(TextureKind::Count) == TEX_KIND_COUNT,
               "TextureKind must match TEX_* in common.h");
 
 namespace {
 
-// --- The keys, each defined once and shared by the kinds that take it ---
+// --- Key constructors ---
 
 KeyRange positive() { return {0.0, 1e300, true, false, false}; }
 KeyRange wholeFrom(double lo, double hi) { return {lo, hi, false, false, true}; }
@@ -34,19 +35,6 @@ TextureKey wholeKey(const char* name, MaterialSlot slot, KeyRange range, int Tex
   k.whole = field;
   return k;
 }
-
-const TextureKey kColor1 = colourKey("color1", MaterialSlot::Color1, &TextureDesc::color1, "the colour at blend 0");
-const TextureKey kColor2 = colourKey("color2", MaterialSlot::Color2, &TextureDesc::color2, "the colour at blend 1");
-const TextureKey kScale =
-    numberKey("scale", MaterialSlot::ParamX, positive(), &TextureDesc::scale, "frequency multiplier of the coordinate");
-const TextureKey kStrength =
-    numberKey("strength", MaterialSlot::ParamY, KeyRange{}, &TextureDesc::strength, "amount of turbulence");
-const TextureKey kSquares =
-    numberKey("squares", MaterialSlot::ParamZ, positive(), &TextureDesc::squares, "checks per side of one tile");
-const TextureKey kOctaves =
-    wholeKey("octaves", MaterialSlot::Octaves, wholeFrom(1, 16), &TextureDesc::octaves, "noise octaves summed");
-const TextureKey kFile{"file", KeyType::File, MaterialSlot::ImageFile, {},
-                       "PNG or JPEG file, relative to the scene file that names it"};
 
 TextureDesc defaults(TextureKind kind, glm::vec3 color1, glm::vec3 color2) {
   TextureDesc t;
@@ -71,8 +59,27 @@ double solidCheckerPeriod(const TextureDesc& t) { return 2.0 / double(t.squares)
 double latticePeriod(const TextureDesc& t) { return 256.0 / double(t.scale); }
 
 // --- The kinds, in TEX_* order ---
+// Built on first use (textureKinds), not at static initialisation: other files' statics may
+// read the table.
 std::vector<TextureKindInfo> makeKinds() {
   using K = TextureKind;
+  // The keys, each defined once and shared by the kinds that take it.
+  const TextureKey kColor1 = colourKey("color1", MaterialSlot::Color1, &TextureDesc::color1, "the colour at blend 0");
+  const TextureKey kColor2 = colourKey("color2", MaterialSlot::Color2, &TextureDesc::color2, "the colour at blend 1");
+  const TextureKey kScale =
+      numberKey("scale", MaterialSlot::ParamX, positive(), &TextureDesc::scale, "frequency multiplier of the coordinate");
+  const TextureKey kStrength =
+      numberKey("strength", MaterialSlot::ParamY, KeyRange{}, &TextureDesc::strength, "amount of turbulence");
+  const TextureKey kSquares =
+      numberKey("squares", MaterialSlot::ParamZ, positive(), &TextureDesc::squares, "checks per side of one tile");
+  const TextureKey kOctaves =
+      wholeKey("octaves", MaterialSlot::Octaves, wholeFrom(1, 16), &TextureDesc::octaves, "noise octaves summed");
+  const TextureKey kColumns = wholeKey("columns", MaterialSlot::ParamZ, wholeFrom(1, 1024), &TextureDesc::columns,
+                                       "bricks per tile along u (rows: twice as many)");
+  const TextureKey kMortar = numberKey("mortar", MaterialSlot::ParamW, KeyRange{0.0, 0.5, false, true, false},
+                                       &TextureDesc::mortar, "joint width, a fraction of a brick's height");
+  const TextureKey kFile{"file", KeyType::File, MaterialSlot::ImageFile, {},
+                         "PNG or JPEG file, relative to the scene file that names it"};
   const std::vector<TextureKey> noiseKeys = {kColor1, kColor2, kScale, kStrength, kOctaves};
   TextureDesc checker = defaults(K::Checker, glm::vec3(0.9f), glm::vec3(0.1f));
   checker.squares = 2.0f;
@@ -81,6 +88,9 @@ std::vector<TextureKindInfo> makeKinds() {
   TextureDesc noise = defaults(K::Noise, glm::vec3(0.05f, 0.1f, 0.4f), glm::vec3(0.9f, 0.9f, 0.8f));
   noise.scale = 8.0f;
   const glm::vec3 turbulence1(0.95f, 0.85f, 0.6f), turbulence2(0.3f, 0.1f, 0.05f);
+  TextureDesc bricks = defaults(K::Bricks, glm::vec3(0.55f, 0.20f, 0.15f), glm::vec3(0.75f, 0.74f, 0.70f));
+  bricks.columns = 4;
+  bricks.mortar = 0.1f;
   return {
       {K::Image, "image", false, false, {kFile}, defaults(K::Image, glm::vec3(1.0f), glm::vec3(0.0f)), noPeriod},
       {K::Checker, "checker", false, false, {kColor1, kColor2, kSquares}, checker, noPeriod},
@@ -96,6 +106,7 @@ std::vector<TextureKindInfo> makeKinds() {
       // Derivative turbulence damps octaves on slopes, so it needs more gain for the same contrast.
       {K::DTurbulence, "dturbulence", true, true, noiseKeys,
        noiseDefaults(K::DTurbulence, turbulence1, turbulence2, 6.0f, 2.5f, 6), latticePeriod},
+      {K::Bricks, "bricks", false, false, {kColor1, kColor2, kColumns, kMortar}, bricks, noPeriod},
   };
 }
 

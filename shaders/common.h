@@ -58,10 +58,11 @@ using uvec4 = glm::uvec4;
 #define TEX_WOOD 6
 #define TEX_TURBULENCE 7
 #define TEX_DTURBULENCE 8
-#define TEX_KIND_COUNT 9
+#define TEX_BRICKS 9
+#define TEX_KIND_COUNT 10
 // The kinds that read the 2D (u, v) of the shape's mapping; the others read the solid coordinate
 // (each kind's row in host/texture_kinds.cpp says which; a test checks that the two agree).
-#define TEX_2D_KINDS ((1u << TEX_IMAGE) | (1u << TEX_CHECKER))
+#define TEX_2D_KINDS ((1u << TEX_IMAGE) | (1u << TEX_CHECKER) | (1u << TEX_BRICKS))
 
 // Specialisation constant ids.
 #define SPEC_SPHERE_TEXTURE_KINDS 0  // uint bit mask of the TEX_* kinds on spheres

@@ -28,6 +28,7 @@
 #include "kinds/wood.glsl"
 #include "kinds/turbulence.glsl"
 #include "kinds/dturbulence.glsl"
+#include "kinds/bricks.glsl"
 
 // One kind's evaluation in this module: point-sampled, or filtered over the footprint fp.
 #ifdef RAYTEX_FILTER_BOX
@@ -54,19 +55,21 @@ vec3 textureColor(Material m, TexCoord tc) {
   TEXTURE_BLEND_CASE(TEX_WOOD, wood)
   TEXTURE_BLEND_CASE(TEX_TURBULENCE, turbulence)
   TEXTURE_BLEND_CASE(TEX_DTURBULENCE, dturbulence)
+  TEXTURE_BLEND_CASE(TEX_BRICKS, bricks)
   return m.diffuse.rgb;  // TEX_NONE
 }
 
 #ifdef RAYTEX_FILTER_BOX
 // Kinds whose box-filtered blend is a closed-form average over a footprint box: a long
 // footprint is split into probes along its long axis (trace.comp.glsl, albedoAt).
-#define TEXTURE_CLOSED_FORM_KINDS ((1u << TEX_CHECKER) | (1u << TEX_SOLID_CHECKER))
+#define TEXTURE_CLOSED_FORM_KINDS ((1u << TEX_CHECKER) | (1u << TEX_SOLID_CHECKER) | (1u << TEX_BRICKS))
 bool hasClosedFormFilter(uint kind) { return ((TEXTURE_CLOSED_FORM_KINDS >> kind) & 1u) != 0u; }
 
 // The box-filtered blend factor of a closed-form kind.
 float filteredBlend(Material m, TexCoord tc, Footprint fp) {
   if (TEXTURE_KIND_PRESENT(TEX_CHECKER) && m.textureKind == TEX_CHECKER) return checkerBox(m, tc, fp);
   if (TEXTURE_KIND_PRESENT(TEX_SOLID_CHECKER) && m.textureKind == TEX_SOLID_CHECKER) return solidCheckerBox(m, tc, fp);
+  if (TEXTURE_KIND_PRESENT(TEX_BRICKS) && m.textureKind == TEX_BRICKS) return bricksBox(m, tc, fp);
   return 0.0;
 }
 
@@ -78,6 +81,7 @@ float filteredCells(Material m, vec2 duv, vec3 ds) {
   float cells = 0.0;
   TEXTURE_CELLS_CASE(TEX_CHECKER, checker)
   TEXTURE_CELLS_CASE(TEX_SOLID_CHECKER, solidChecker)
+  TEXTURE_CELLS_CASE(TEX_BRICKS, bricks)
   return cells;
 }
 #endif  // RAYTEX_FILTER_BOX

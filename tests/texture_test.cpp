@@ -11,12 +11,18 @@
 #include <cmath>
 #include <random>
 #include <stdexcept>
+#include <vector>
 
 namespace {
 
-const TextureKind kProcedural[] = {TextureKind::Checker, TextureKind::SolidChecker, TextureKind::Noise,
-                                   TextureKind::Marble,  TextureKind::Wood,         TextureKind::Turbulence,
-                                   TextureKind::DTurbulence};
+// Every kind of the table with a CPU blend formula (all but image).
+std::vector<TextureKind> proceduralKinds() {
+  std::vector<TextureKind> kinds;
+  for (const TextureKindInfo& info : textureKinds())
+    if (info.kind != TextureKind::Image) kinds.push_back(info.kind);
+  return kinds;
+}
+const std::vector<TextureKind> kProcedural = proceduralKinds();
 
 TexCoordD coord(glm::dvec2 uv, glm::dvec2 tile, glm::dvec3 solid = glm::dvec3(0.0)) {
   TexCoordD tc;
@@ -126,6 +132,31 @@ TEST(TextureSolidChecker, ParityByHand) {
   // On a sphere: n = (1,0,0) -> solid (1, 0.5, 0.5) -> (4, 2, 2): even.
   EXPECT_EQ(textureBlendReference(t, sphereTexCoord(glm::dvec3(1, 0, 0))), 0.0);
   EXPECT_EQ(textureColorReference(t, solidCoord({0.3, 0.1, 0.1})), glm::dvec3(t.color2));
+}
+
+TEST(TextureBricks, RunningBondByHand) {
+  TextureDesc t = defaultTexture(TextureKind::Bricks);  // 4 columns, 8 rows a tile, mortar 0.1
+  ASSERT_EQ(t.columns, 4);
+  // Row 0 (even): u = 0.1 is 0.4 of a brick, v = 1/16 mid-row: brick.
+  EXPECT_EQ(textureBlendReference(t, coord({0.1, 0.0625}, {0, 0})), 0.0);
+  // A row edge (v = 1/8: row 1 starts) and a brick edge of an even row (u = 1/4): mortar.
+  EXPECT_EQ(textureBlendReference(t, coord({0.1, 0.125}, {0, 0})), 1.0);
+  EXPECT_EQ(textureBlendReference(t, coord({0.25, 0.0625}, {0, 0})), 1.0);
+  // Within the joint's half widths (mortar/2 of a row, mortar/4 of a brick), and just outside.
+  EXPECT_EQ(textureBlendReference(t, coord({0.1, 0.125 + 0.049 / 8}, {0, 0})), 1.0);
+  EXPECT_EQ(textureBlendReference(t, coord({0.1, 0.125 + 0.051 / 8}, {0, 0})), 0.0);
+  EXPECT_EQ(textureBlendReference(t, coord({0.25 + 0.024 / 4, 0.0625}, {0, 0})), 1.0);
+  EXPECT_EQ(textureBlendReference(t, coord({0.25 + 0.026 / 4, 0.0625}, {0, 0})), 0.0);
+  // Row 1 (odd) is shifted half a brick towards +u: its edges lie at u = 1/8 + k/4.
+  EXPECT_EQ(textureBlendReference(t, coord({0.25, 0.1875}, {0, 0})), 0.0);
+  EXPECT_EQ(textureBlendReference(t, coord({0.125, 0.1875}, {0, 0})), 1.0);
+  // Whole tiles, negative ones too, add whole bricks and an even number of rows.
+  for (glm::dvec2 tile : {glm::dvec2(1, 0), glm::dvec2(0, 1), glm::dvec2(-3, -5)})
+    for (glm::dvec2 uv : {glm::dvec2(0.125, 0.1875), glm::dvec2(0.25, 0.1875), glm::dvec2(0.1, 0.0625)})
+      EXPECT_EQ(textureBlendReference(t, coord(uv, tile)), textureBlendReference(t, coord(uv, {0, 0})));
+  // No mortar: bricks everywhere, even on their edges.
+  t.mortar = 0.0f;
+  EXPECT_EQ(textureBlendReference(t, coord({0.25, 0.125}, {0, 0})), 0.0);
 }
 
 TEST(TextureNoise, MidColourAtLatticePoints) {
