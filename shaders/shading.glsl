@@ -18,7 +18,7 @@ Surface surfaceAt(Hit hit, vec3 o, vec3 d) {
     vec3 toHit = o + hit.t * d - sp.centerRadius.xyz;
     vec3 outward = dot(toHit, toHit) > 0.0 ? normalize(toHit) : -d;
     s.p = sp.centerRadius.xyz + sp.centerRadius.w * outward;
-    s.tc = sphereTexCoord(outward, SPHERE_LAT_LONG);  // the mapping uses the outward normal, inside or out
+    s.tc = sphereTexCoord(sp, outward, SPHERE_LAT_LONG);  // the mapping uses the outward normal, inside or out
     s.n = outward;
     s.material = sp.material;
   } else {
