@@ -68,6 +68,14 @@ SceneShape sceneShape(const Scene& scene) {
   shape.sphereCount = count(scene.spheres.size());
   shape.planeCount = count(scene.planes.size());
   shape.lightCount = count(scene.lights.size());
+  // A plane's tex_scale and tex_offset, and its turn of (u, v) and the image, are folded into
+  // what it packs anyway; its turned solid coordinate and a sphere's placement are not.
+  const TexturePlacement none;
+  shape.placed = 0;
+  for (const Sphere& s : scene.spheres)
+    shape.placed |= s.placement.rotate != none.rotate || s.placement.scale != none.scale ||
+                    s.placement.offset != none.offset;
+  for (const Plane& p : scene.planes) shape.placed |= p.placement.rotate != none.rotate;
   return shape;
 }
 

@@ -69,6 +69,7 @@ using uvec4 = glm::uvec4;
 #define SPEC_SPHERE_COUNT 5  // the scene's counts, or COUNT_FROM_FRAME: read Frame's at run time
 #define SPEC_PLANE_COUNT 6
 #define SPEC_LIGHT_COUNT 7
+#define SPEC_TEXTURE_PLACEMENT 10  // false: no object's placement needs the kernel (mapping.glsl)
 
 // Scenes with at most this many spheres, planes or lights get kernels with the count
 // built in (the loops over them unrolled); larger ones loop to Frame's count. On lavapipe a

@@ -21,13 +21,10 @@ vec2 uvWidth(Footprint f) { return min(max(abs(f.duvdx), abs(f.duvdy)), vec2(FOO
 vec3 solidWidth(Footprint f) { return min(max(abs(f.dsdx), abs(f.dsdy)), vec3(FOOTPRINT_MAX)); }
 
 // The mapping of the hit's shape at the surface s; with the surface steps dpdx, dpdy also its
-// footprint (mapping.glsl). A sphere maps its outward normal: s.n, or s.n flipped (exactly)
-// when seen from inside.
+// footprint (mapping.glsl).
 TexCoord texCoordAt(Hit hit, Surface s, vec3 dpdx, vec3 dpdy, out Footprint fp) {
   if (hit.kind == HIT_PLANE) return planeTexCoord(planeAt(hit.index), s.p, dpdx, dpdy, fp);
-  Sphere sp = sphereAt(hit.index);
-  vec3 outward = dot(s.n, s.p - sp.centerRadius.xyz) < 0.0 ? -s.n : s.n;
-  return sphereTexCoord(sp, outward, dpdx, dpdy, fp);
+  return sphereTexCoord(sphereAt(hit.index), s.outward, dpdx, dpdy, fp);
 }
 
 // Texture coordinates of the surface point p + dp (dp in the tangent plane at the hit):

@@ -30,7 +30,10 @@ struct Footprint {
 #endif
 
 // v rotated by the unit quaternion q (xyz, w): the identity (0, 0, 0, 1) returns v exactly.
+// TEXTURE_PLACEMENT (a specialisation constant, declared by the kernel) false: no object is
+// turned (nor a sphere scaled or offset), and the placement compiles to nothing.
 vec3 rotateByQuaternion(vec4 q, vec3 v) {
+  if (!TEXTURE_PLACEMENT) return v;
   return v + 2.0 * cross(q.xyz, cross(q.xyz, v) + q.w * v);
 }
 
@@ -89,23 +92,25 @@ TexCoord planeTexCoord(Plane pl, vec3 p, vec3 dpdx, vec3 dpdy, out Footprint fp)
 // While sp.clampV (s = 1, no v offset) v stays in [0, 1] for the poles' clamp.
 TexCoord sphereTexCoord(Sphere sp, vec3 n, bool latLong) {
   vec3 m = rotateByQuaternion(sp.texRotation, n);
-  float s = sp.solidOffset.w;
   TexCoord tc;
   tc.uv = vec2(0.0);
   tc.tile = vec2(0.0);
   if (latLong) {
     float phi = (m.x == 0.0 && m.z == 0.0) ? 0.0 : atan(m.z, m.x);
     float theta = atan(m.y, length(m.xz));
-    vec2 lonLat = vec2((phi + float(MAPPING_PI)) / float(2.0 * MAPPING_PI),
-                       (theta + float(0.5 * MAPPING_PI)) / float(MAPPING_PI));
-    vec2 unwrapped = clampTexCoord(lonLat / s) + vec2(sp.uOffset, sp.vOffset);
-    tc.tile = floor(unwrapped);
-    if (sp.clampV != 0u) tc.tile.y = 0.0;
-    tc.uv = unwrapped - tc.tile;
+    tc.uv = vec2((phi + float(MAPPING_PI)) / float(2.0 * MAPPING_PI),
+                 (theta + float(0.5 * MAPPING_PI)) / float(MAPPING_PI));
+    if (TEXTURE_PLACEMENT) {
+      vec2 unwrapped = clampTexCoord(tc.uv / sp.solidOffset.w) + vec2(sp.uOffset, sp.vOffset);
+      tc.tile = floor(unwrapped);
+      if (sp.clampV != 0u) tc.tile.y = 0.0;
+      tc.uv = unwrapped - tc.tile;
+    }
   }
-  tc.solid = clampTexCoord((m + 1.0) * 0.5 / s) + sp.solidOffset.xyz;
+  tc.solid = (m + 1.0) * 0.5;
+  if (TEXTURE_PLACEMENT) tc.solid = clampTexCoord(tc.solid / sp.solidOffset.w) + sp.solidOffset.xyz;
   tc.image = vec2(1.0) - tc.uv;
-  tc.clampV = sp.clampV != 0u;
+  tc.clampV = !TEXTURE_PLACEMENT || sp.clampV != 0u;
   return tc;
 }
 
@@ -114,7 +119,7 @@ TexCoord sphereTexCoord(Sphere sp, vec3 n, bool latLong) {
 // dpdx, dpdy (first order: dn = the step's tangential part / r).
 TexCoord sphereTexCoord(Sphere sp, vec3 n, vec3 dpdx, vec3 dpdy, out Footprint fp) {
   vec3 m = rotateByQuaternion(sp.texRotation, n);
-  float invScale = 1.0 / sp.solidOffset.w;
+  float invScale = TEXTURE_PLACEMENT ? 1.0 / sp.solidOffset.w : 1.0;
   float r = sp.centerRadius.w;
   vec3 dmdx = rotateByQuaternion(sp.texRotation, (dpdx - n * dot(n, dpdx)) / r);
   vec3 dmdy = rotateByQuaternion(sp.texRotation, (dpdy - n * dot(n, dpdy)) / r);

@@ -24,6 +24,7 @@ layout(constant_id = SPEC_OUTPUT_MODE) const uint OUTPUT_MODE = OUTPUT_SHADED;
 layout(constant_id = SPEC_SAMPLES_PER_SIDE) const uint SAMPLES_PER_SIDE = 1u;
 layout(constant_id = SPEC_PROGRESSIVE) const bool PROGRESSIVE = false;
 layout(constant_id = SPEC_BAKED) const bool BAKED = false;
+layout(constant_id = SPEC_TEXTURE_PLACEMENT) const bool TEXTURE_PLACEMENT = true;
 layout(constant_id = SPEC_BAKED_MATERIAL_COUNT) const uint BAKED_MATERIAL_COUNT = 1u;
 
 layout(std430, binding = BINDING_OUTPUT) writeonly buffer OutputBlock { vec4 outputPixels[]; };

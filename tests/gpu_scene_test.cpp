@@ -84,6 +84,14 @@ TEST(GpuScene, PlacementPacksTheTurnedAxesAndTheIdentityWithoutIt) {
   EXPECT_NEAR(g.planes[1].uvOffset.x, 0.5f, 1e-6f);
   EXPECT_NEAR(g.planes[1].uvOffset.y, 0.4f, 1e-6f);
   EXPECT_EQ(g.planes[1].uvOffset.z, 4096.0f - 6.0f);
+  // The kernel applies placement (SPEC_TEXTURE_PLACEMENT) only where a packed frame cannot
+  // hold it: a turned plane or a placed sphere, not a plane's tex_scale or tex_offset.
+  EXPECT_EQ(g.shape.placed, 1u);
+  EXPECT_EQ(sceneShape(parseSceneText("plane { tex_scale = 2; tex_offset = (1, 2, 3); }", "t.cfg")).placed, 0u);
+  EXPECT_EQ(sceneShape(parseSceneText("plane { tex_rotate = (0, 1, 0); }", "t.cfg")).placed, 1u);
+  EXPECT_EQ(sceneShape(parseSceneText("sphere { tex_scale = 2; }", "t.cfg")).placed, 1u);
+  EXPECT_EQ(sceneShape(parseSceneText("sphere { tex_offset = (0, 0, 1); }", "t.cfg")).placed, 1u);
+  EXPECT_EQ(sceneShape(parseSceneText("sphere { }", "t.cfg")).placed, 0u);
 }
 
 TEST(GpuScene, ShapeHasTheKindsPerShapeAndTheCountsUpToTheLimit) {

@@ -285,4 +285,25 @@ TEST_F(PlacementTest, RotatedScaledCheckerBoxFilterMatchesSupersampledReference)
   }
 }
 
+// Objects without placement render bit-identically whether the kernel applies placement
+// (SPEC_TEXTURE_PLACEMENT on: the identity quaternion, tex_scale 1 and zero offsets read from
+// the uniform blocks) or is specialised without it, for the course materials, point and box.
+TEST_F(PlacementTest, IdentityPlacementIsExact) {
+  Scene scene = parseSceneFile(std::string(RAYTEX_SOURCE_DIR) + "/scenes/textures.cfg");
+  const int w = 64, h = 48;
+  for (const char* material : {"aSolidChecker", "aMarble", "anImage", "aChecker"}) {
+    SCOPED_TRACE(material);
+    for (size_t m = 0; m < scene.materials.size(); ++m)
+      if (scene.materials[m].name == material) scene.spheres[0].material = int(m);
+    SceneShape with = sceneShape(scene), without = with;
+    ASSERT_EQ(without.placed, 0u);
+    with.placed = 1;
+    for (uint32_t filter : {uint32_t(FILTER_POINT), uint32_t(FILTER_BOX)}) {
+      std::vector<float> a = render(scene, w, h, OUTPUT_SHADED, 1, filter, &with);
+      std::vector<float> b = render(scene, w, h, OUTPUT_SHADED, 1, filter, &without);
+      EXPECT_TRUE(a == b) << "filter " << filter;
+    }
+  }
+}
+
 }  // namespace
