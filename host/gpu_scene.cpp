@@ -6,6 +6,7 @@
 #include "texture_kinds.h"
 
 #include <glm/geometric.hpp>
+#include <glm/gtc/quaternion.hpp>
 #include <glm/trigonometric.hpp>
 
 #include <algorithm>
@@ -44,6 +45,14 @@ SceneShape sceneShape(const Scene& scene) {
   shape.sphereCount = count(scene.spheres.size());
   shape.planeCount = count(scene.planes.size());
   shape.lightCount = count(scene.lights.size());
+  // A plane's tex_scale and tex_offset, and its turn of (u, v) and the image, are folded into
+  // what it packs anyway; its turned solid coordinate and a sphere's placement are not.
+  const TexturePlacement none;
+  shape.placed = 0;
+  for (const Sphere& s : scene.spheres)
+    shape.placed |= s.placement.rotate != none.rotate || s.placement.scale != none.scale ||
+                    s.placement.offset != none.offset;
+  for (const Plane& p : scene.planes) shape.placed |= p.placement.rotate != none.rotate;
   return shape;
 }
 
@@ -77,26 +86,90 @@ double solidPeriod(const TextureDesc& t) {
 // x clamped to +-TEXCOORD_LIMIT, as the kernel clamps its coordinates.
 double clampTexCoord(double x) { return std::clamp(x, -TEXCOORD_LIMIT, TEXCOORD_LIMIT); }
 
-// The plane's texture frame and the camera's position folded into texture offsets, in double.
+// tex_scale as the kernel divides by it: a normal float (a subnormal may be flushed to 0).
+double kernelScale(double scale) { return std::clamp(scale, double(FLT_MIN), double(FLT_MAX)); }
+
+// x reduced modulo the solid texture's period (if it has one) and clamped as the kernel clamps.
+glm::dvec3 reduceSolid(glm::dvec3 x, const TextureDesc& texture) {
+  double period = solidPeriod(texture);
+  if (period > 0.0) x = glm::dvec3(reduceModulo(x.x, period), reduceModulo(x.y, period), reduceModulo(x.z, period));
+  return glm::dvec3(clampTexCoord(x.x), clampTexCoord(x.y), clampTexCoord(x.z));
+}
+
+// Kinds that read the 2D coordinate (u, v) (their rows in texture_kinds.cpp); the others the solid one.
+bool readsUv(TextureKind kind) { return kind != TextureKind::None && !isSolidTexture(kind); }
+
+// tex_rotate's R = Rz Ry Rx (degrees about the fixed axes, x first) as a unit quaternion.
+glm::dquat placementQuaternion(glm::dvec3 degrees) {
+  auto about = [](double angle, glm::dvec3 axis) { return glm::angleAxis(glm::radians(angle), axis); };
+  return about(degrees.z, {0, 0, 1}) * about(degrees.y, {0, 1, 0}) * about(degrees.x, {1, 0, 0});
+}
+
+// A quaternion as the kernel reads it (rotateByQuaternion): xyz, w.
+glm::vec4 packQuaternion(glm::dquat q) { return glm::vec4(float(q.x), float(q.y), float(q.z), float(q.w)); }
+
+// Where an image's top row points on a plane of unit normal n (docs/textures.md, "Image
+// orientation"): world +y in the plane, or -z where the plane is within 45 degrees of level.
+glm::dvec3 imageUp(glm::dvec3 n) {
+  glm::dvec3 world = n.y * n.y >= 0.5 ? glm::dvec3(0, 0, -1) : glm::dvec3(0, 1, 0);
+  return glm::normalize(world - glm::dot(world, n) * n);
+}
+
+// The sphere's centre relative to the camera and its placement: R^-1 as a quaternion, the scale,
+// and tex_offset on the coordinate its kind reads (the solid one reduced modulo its period,
+// (u, v) modulo 2, which keeps the checker's tile parity).
+gpu::Sphere packSphere(const Sphere& s, const TextureDesc& texture, glm::dvec3 eye, uint32_t material) {
+  const TexturePlacement& place = s.placement;
+  const bool flat = readsUv(texture.kind);
+  gpu::Sphere gs{};
+  gs.centerRadius = glm::vec4(glm::vec3(s.center - eye), float(s.radius));
+  gs.texRotation = packQuaternion(glm::conjugate(placementQuaternion(place.rotate)));
+  glm::dvec3 solid = flat ? glm::dvec3(0.0) : reduceSolid(place.offset, texture);
+  gs.solidOffset = glm::vec4(glm::vec3(solid), float(kernelScale(place.scale)));
+  gs.material = material;
+  gs.uOffset = float(reduceModulo(place.offset.x, 2.0));
+  gs.vOffset = float(reduceModulo(place.offset.y, 2.0));
+  gs.clampV = place.scale == 1.0 && place.offset.y == 0.0;
+  return gs;
+}
+
+// The plane's placed texture frame and the camera's position with tex_offset folded into
+// texture offsets, in double. The mapping sees n' = R^-1 n: its frame t', b' and image axes for
+// n', turned back by R, are the world axes of u, v and the image; o = d n lies on every axis's
+// zero (o.R t' = d n'.t' = 0), so only the eye enters the offsets.
 gpu::Plane packPlane(const Plane& p, const TextureDesc& texture, glm::dvec3 eye, uint32_t material) {
+  const TexturePlacement& place = p.placement;
   // The frame is built once here by the same rule the CPU reference uses.
   PlaneFrame pf = planeFrame(p.normal, p.distance);
-  // tex_scale as the kernel divides by it: a normal float (a subnormal may be flushed to 0).
-  const double s = std::clamp(p.texScale, double(FLT_MIN), double(FLT_MAX));
+  const glm::dmat3 r = glm::mat3_cast(placementQuaternion(place.rotate));
+  const glm::dmat3 inverse = glm::transpose(r);
+  // (planeFrame renormalises its normal: an unturned frame is kept bit for bit.)
+  const bool turns = place.rotate != glm::dvec3(0.0);
+  const PlaneFrame turned = turns ? planeFrame(inverse * pf.normal, pf.distance) : pf;
+  const glm::dvec3 up = imageUp(turned.normal), right = glm::cross(up, turned.normal);
+  const double s = kernelScale(place.scale);
   gpu::Plane gp{};
   gp.normalDistance = glm::vec4(glm::vec3(pf.normal), float(pf.distance - glm::dot(pf.normal, eye)));
-  gp.tangentScale = glm::vec4(glm::vec3(pf.tangent), float(s));
-  gp.binormal = glm::vec4(glm::vec3(pf.binormal), 0.0f);
-  glm::dvec2 st(glm::dot(eye, pf.tangent) / s, glm::dot(eye, pf.binormal) / s);
+  const glm::dvec3 t = r * turned.tangent, b = r * turned.binormal;
+  gp.tangentScale = glm::vec4(glm::vec3(t), float(s));
+  gp.binormal = glm::vec4(glm::vec3(b), 0.0f);
+  glm::dvec2 st(glm::dot(eye, t) / s + place.offset.x, glm::dot(eye, b) / s + place.offset.y);
   glm::dvec2 cell = glm::floor(st);
   gp.uvOffset = glm::vec4(float(st.x - cell.x), float(st.y - cell.y), float(reduceModulo(cell.x, 4096.0)),
                           float(reduceModulo(cell.y, 4096.0)));
-  glm::dvec3 solid = eye / s;
-  double period = solidPeriod(texture);
-  if (period > 0.0)
-    solid = glm::dvec3(reduceModulo(solid.x, period), reduceModulo(solid.y, period), reduceModulo(solid.z, period));
-  solid = glm::dvec3(clampTexCoord(solid.x), clampTexCoord(solid.y), clampTexCoord(solid.z));
-  gp.solidOffset = glm::vec4(glm::vec3(solid), 0.0f);
+  // The image's (column, row): (u, v) with tex_offset, read along right and down in the plane.
+  const glm::dvec3 imageX = r * right, imageY = -(r * up);
+  const glm::dvec2 offsetUv(place.offset.x, place.offset.y);
+  glm::dvec2 image(glm::dot(eye, imageX) / s + offsetUv.x * glm::dot(turned.tangent, right) +
+                       offsetUv.y * glm::dot(turned.binormal, right),
+                   glm::dot(eye, imageY) / s - offsetUv.x * glm::dot(turned.tangent, up) -
+                       offsetUv.y * glm::dot(turned.binormal, up));
+  gp.imageRight = glm::vec4(glm::vec3(imageX), float(reduceModulo(image.x, 1.0)));
+  gp.imageDown = glm::vec4(glm::vec3(imageY), float(reduceModulo(image.y, 1.0)));
+  // solid = (R^-1 (x - o) + o) / s + offset, x = camera-relative + eye: the eye's part here.
+  const glm::dvec3 origin = pf.distance * pf.normal;
+  gp.solidOffset = glm::vec4(glm::vec3(reduceSolid((inverse * eye + (origin - inverse * origin)) / s + place.offset, texture)), 0.0f);
+  gp.texRotation = packQuaternion(glm::conjugate(placementQuaternion(place.rotate)));
   gp.material = material;
   return gp;
 }
@@ -157,12 +230,8 @@ void packCamera(GpuScene& g, const Scene& scene, uint32_t width, uint32_t height
   g.spheres.clear();
   g.planes.clear();
   g.lights.clear();
-  for (const Sphere& s : scene.spheres) {
-    gpu::Sphere gs{};
-    gs.centerRadius = glm::vec4(glm::vec3(s.center - eye), float(s.radius));
-    gs.material = g.materialIndex.at(s.material);
-    g.spheres.push_back(gs);
-  }
+  for (const Sphere& s : scene.spheres)
+    g.spheres.push_back(packSphere(s, materialAt(scene, s.material, fallback).texture, eye, g.materialIndex.at(s.material)));
   for (const Plane& p : scene.planes)
     g.planes.push_back(packPlane(p, materialAt(scene, p.material, fallback).texture, eye, g.materialIndex.at(p.material)));
   for (const Light& l : scene.lights) g.lights.push_back({v4(glm::vec3(l.position - eye)), v4(l.color)});

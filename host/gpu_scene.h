@@ -20,10 +20,11 @@ struct SceneShape {
   uint32_t sphereCount = COUNT_FROM_FRAME;  // the count if at most MAX_SPECIALISED_COUNT
   uint32_t planeCount = COUNT_FROM_FRAME;
   uint32_t lightCount = COUNT_FROM_FRAME;
+  uint32_t placed = 1;  // SPEC_TEXTURE_PLACEMENT (a VkBool32): an object's placement needs the kernel's
   uint32_t kinds() const { return sphereKinds | planeKinds; }
   bool operator==(const SceneShape& o) const {
     return sphereKinds == o.sphereKinds && planeKinds == o.planeKinds && sphereCount == o.sphereCount &&
-           planeCount == o.planeCount && lightCount == o.lightCount;
+           planeCount == o.planeCount && lightCount == o.lightCount && placed == o.placed;
   }
 };
 

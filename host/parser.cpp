@@ -118,7 +118,7 @@ void checkReadable(const State& st, const Token& name, const std::string& path) 
 bool isReserved(const std::string& w) {
   static const char* const words[] = {"sphere", "plane", "camera",    "light",    "material", "render", "background",
                                       "ambient_light", "center", "radius", "normal", "distance", "tex_scale",
-                                      "texture"};
+                                      "tex_rotate", "tex_offset", "texture"};
   for (const char* r : words)
     if (w == r) return true;
   return isNonFiniteWord(w);
@@ -272,10 +272,42 @@ class Parser {
     semicolon("material name " + quote(key.text));
   }
 
+  // tex_rotate, tex_scale or tex_offset in the sphere or plane block `where` (docs/scene-format.md,
+  // "Texture placement"); false if `key` is none of them. offsetLoc: where tex_offset's value is.
+  bool placementStatement(const Token& key, Seen& seen, const std::string& where, TexturePlacement* place,
+                          FileLoc* offsetLoc) {
+    if (key.text == "tex_rotate") {
+      assign(key, seen, where);
+      FileLoc loc;
+      place->rotate = tuple(&loc);
+      for (int i = 0; i < 3; ++i)
+        if (!(std::fabs(place->rotate[i]) <= 360.0)) fail(loc, "tex_rotate angles must be from -360 to 360 degrees");
+    } else if (key.text == "tex_scale") {
+      assign(key, seen, where);
+      place->scale = positive("tex_scale");
+    } else if (key.text == "tex_offset") {
+      assign(key, seen, where);
+      place->offset = tuple(offsetLoc);
+    } else {
+      return false;
+    }
+    semicolon("the value of " + quote(key.text));
+    return true;
+  }
+
+  // A 2D kind reads (u, v) alone: a third offset component would be silently ignored.
+  void checkOffset(const TexturePlacement& place, int material, const FileLoc& offsetLoc) {
+    TextureKind kind = material < 0 ? TextureKind::None : st_.scene.materials[size_t(material)].texture.kind;
+    if (place.offset.z != 0.0 && kind != TextureKind::None && !isSolidTexture(kind))
+      fail(offsetLoc, std::string("tex_offset's third component must be 0 on a ") + textureKindName(kind) +
+                          " texture (it offsets (u, v) only)");
+  }
+
   void parseSphere(const Token& kw) {
     Sphere s;
     s.loc = kw.loc;
     Seen seen;
+    FileLoc offsetLoc;
     block("sphere", [&](const Token& key) {
       if (key.text == "center") {
         assign(key, seen, "sphere");
@@ -284,11 +316,13 @@ class Parser {
         assign(key, seen, "sphere");
         s.radius = positive("sphere radius");
       } else {
-        materialStatement(key, &s.material, "sphere");
+        if (!placementStatement(key, seen, "sphere", &s.placement, &offsetLoc))
+          materialStatement(key, &s.material, "sphere");
         return;
       }
       semicolon("the value of " + quote(key.text));
     });
+    checkOffset(s.placement, s.material, offsetLoc);
     st_.scene.spheres.push_back(s);
   }
 
@@ -296,6 +330,7 @@ class Parser {
     Plane p;
     p.loc = kw.loc;
     Seen seen;
+    FileLoc offsetLoc;
     block("plane", [&](const Token& key) {
       if (key.text == "normal") {
         assign(key, seen, "plane");
@@ -307,16 +342,21 @@ class Parser {
       } else if (key.text == "distance") {
         assign(key, seen, "plane");
         p.distance = number();
-      } else if (key.text == "tex_scale") {
-        assign(key, seen, "plane");
-        p.texScale = positive("tex_scale");
       } else {
-        materialStatement(key, &p.material, "plane");
+        if (!placementStatement(key, seen, "plane", &p.placement, &offsetLoc))
+          materialStatement(key, &p.material, "plane");
         return;
       }
       semicolon("the value of " + quote(key.text));
     });
+    checkOffset(p.placement, p.material, offsetLoc);
     st_.scene.planes.push_back(p);
+  }
+
+  // Texture placement belongs to an object: the same material may sit on objects placed differently.
+  void failPlacementKey(const Token& key, const std::string& where) {
+    if (key.text == "tex_rotate" || key.text == "tex_scale" || key.text == "tex_offset")
+      fail(key.loc, quote(key.text) + " is not a key of " + where + ": texture placement belongs in the sphere or plane block");
   }
 
   void parseMaterial() {
@@ -348,6 +388,7 @@ class Parser {
         m.texture = parseTexture();
         return;
       } else {
+        failPlacementKey(key, where);
         fail(key.loc, "unknown key " + quote(key.text) + " in " + where);
       }
       semicolon("the value of " + quote(key.text));
@@ -370,6 +411,7 @@ class Parser {
       Seen seen;
       block(where, [&](const Token& key) {
         const TextureKey* k = findKindKey(*info, key.text);
+        if (!k && !findTextureKey(key.text)) failPlacementKey(key, where);
         if (!k && !findTextureKey(key.text)) fail(key.loc, "unknown key " + quote(key.text) + " in " + where);
         if (!k) fail(key.loc, "'" + key.text + "' does not apply to " + info->name + " textures");
         assign(key, seen, where);

@@ -79,6 +79,7 @@ VkPipeline createTracePipeline(const Device& device, VkPipelineLayout layout, co
       {SPEC_SPHERE_COUNT, offsetof(PipelineKey, shape.sphereCount), sizeof(uint32_t)},
       {SPEC_PLANE_COUNT, offsetof(PipelineKey, shape.planeCount), sizeof(uint32_t)},
       {SPEC_LIGHT_COUNT, offsetof(PipelineKey, shape.lightCount), sizeof(uint32_t)},
+      {SPEC_TEXTURE_PLACEMENT, offsetof(PipelineKey, shape.placed), sizeof(VkBool32)},
       {SPEC_OUTPUT_MODE, offsetof(PipelineKey, outputMode), sizeof(uint32_t)},
       {SPEC_SAMPLES_PER_SIDE, offsetof(PipelineKey, samplesPerSide), sizeof(uint32_t)},
       {SPEC_PROGRESSIVE, offsetof(PipelineKey, progressive), sizeof(VkBool32)},

@@ -89,7 +89,7 @@ ReferenceHit referenceClosestHit(const Scene& scene, glm::dvec3 o, glm::dvec3 d,
     best.t = t;
     best.n = glm::normalize(o + t * d - glm::dvec3(s.center));
     best.p = glm::dvec3(s.center) + r * best.n;
-    if (withTexCoords) best.tc = sphereTexCoord(best.n);
+    if (withTexCoords) best.tc = sphereTexCoord(s.placement, best.n);
     best.edgeMargin = margin;
   }
   for (size_t i = 0; i < scene.planes.size(); ++i) {
@@ -106,7 +106,7 @@ ReferenceHit referenceClosestHit(const Scene& scene, glm::dvec3 o, glm::dvec3 d,
     best.t = t;
     best.p = o + t * d;
     best.n = frame.normal;
-    if (withTexCoords) best.tc = planeTexCoord(frame, double(pl.texScale), best.p);
+    if (withTexCoords) best.tc = planeTexCoord(frame, pl.placement, best.p);
     best.edgeMargin = margin;  // a sphere passed nearby still makes this pixel an edge
   }
   if (best.kind == 0) best.t = 0.0;

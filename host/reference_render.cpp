@@ -28,7 +28,7 @@ glm::dvec3 albedoAt(const Context& c, const Material& m, const ReferenceHit& hit
     case TextureKind::None:
       return glm::dvec3(m.diffuse);
     case TextureKind::Image:
-      return sampleImageReference(c.images.at(m.texture.imagePath), hit.tc.uv, hit.kind == 2);
+      return sampleImageReference(c.images.at(m.texture.imagePath), hit.tc.image, hit.tc.clampV);
     default:
       return textureColorReference(m.texture, hit.tc);
   }
@@ -81,10 +81,10 @@ std::map<std::string, ImageRGBA8> loadReferenceImages(const Scene& scene, uint32
   return images;
 }
 
-glm::dvec3 sampleImageReference(const ImageRGBA8& image, glm::dvec2 uv, bool clampV) {
+glm::dvec3 sampleImageReference(const ImageRGBA8& image, glm::dvec2 st, bool clampV) {
   const int w = image.width, h = image.height;
-  double x = (1.0 - uv.x) * w - 0.5;
-  double y = (1.0 - uv.y) * h;
+  double x = st.x * w - 0.5;
+  double y = st.y * h;
   if (clampV) y = std::clamp(y, 0.5, h - 0.5);
   y -= 0.5;
   double x0 = std::floor(x), y0 = std::floor(y);

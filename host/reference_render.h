@@ -29,9 +29,10 @@ struct ReferenceImage {
 std::map<std::string, ImageRGBA8> loadReferenceImages(const Scene& scene,
                                                       uint32_t maxImageMiB = kDefaultMaxImageMiB);
 
-// Bilinear sample in linear light at column 1 - u, row 1 - v (docs/textures.md), u
-// repeating; v repeating too, or clamped to the texel centres when clampV (spheres).
-glm::dvec3 sampleImageReference(const ImageRGBA8& image, glm::dvec2 uv, bool clampV);
+// Bilinear sample in linear light at st = (column, row) as fractions of the image, row 0 at
+// the top (TexCoordD::image, docs/textures.md), s repeating; t repeating too, or clamped to
+// the texel centres when clampV (spheres).
+glm::dvec3 sampleImageReference(const ImageRGBA8& image, glm::dvec2 st, bool clampV);
 
 // Renders with samplesPerSide^2 samples per pixel on `threads` threads (0: all cores).
 // maxImageMiB: as loadReferenceImages.

@@ -65,12 +65,23 @@ struct Material {
   FileLoc loc;
 };
 
+// Where an object's texture lies on it (docs/scene-format.md, "Texture placement"): the
+// mapping sees p' = R^-1 (p - o) + o and n' = R^-1 n (R = Rz Ry Rx of `rotate`, o the sphere's
+// centre or the plane's origin d n), divides its coordinate by `scale` and adds `offset` last:
+// (u, v) += (x, y) for 2D kinds, the solid coordinate += offset for solid kinds.
+struct TexturePlacement {
+  glm::dvec3 rotate{0.0};  // tex_rotate: degrees about the fixed x, y, z axes, x first
+  double scale = 1.0;      // tex_scale: size of one texture repeat (> 0)
+  glm::dvec3 offset{0.0};  // tex_offset
+};
+
 // Positions and sizes are double: a scene far from the origin keeps them exact until the
 // host makes them camera-relative (gpu_scene.cpp). Colours are float.
 struct Sphere {
   glm::dvec3 center{0.0};
   double radius = 1.0;
   int material = -1;  // index into Scene::materials; -1: the default material
+  TexturePlacement placement;
   FileLoc loc;
 };
 
@@ -78,8 +89,8 @@ struct Sphere {
 struct Plane {
   glm::dvec3 normal{0.0, 1.0, 0.0};
   double distance = 0.0;
-  double texScale = 1.0;  // side of one repeated texture square
   int material = -1;
+  TexturePlacement placement;  // scale: side of one repeated texture square
   FileLoc loc;
 };
 

@@ -61,45 +61,56 @@ BAKED_WORDS_10(40)
 BAKED_WORDS_10(41)
 BAKED_WORDS_10(42)
 BAKED_WORDS_10(43)
+BAKED_WORDS_10(44)
+BAKED_WORDS_10(45)
+BAKED_WORDS_10(46)
+BAKED_WORDS_10(47)
+BAKED_WORDS_10(48)
+BAKED_WORDS_10(49)
+BAKED_WORDS_10(50)
+BAKED_WORDS_10(51)
 
-// Words d..d+3 of ten t as a vec4.
+// Words d..d+3 of ten t as a vec4, and words 8, 9 of ten t with words 0, 1 of ten u.
 #define BAKED_VEC4(t, d0, d1, d2, d3)                                                                      \
   vec4(uintBitsToFloat(bakedWord##t##_##d0), uintBitsToFloat(bakedWord##t##_##d1),                      \
        uintBitsToFloat(bakedWord##t##_##d2), uintBitsToFloat(bakedWord##t##_##d3))
+#define BAKED_VEC4_ACROSS(t, u)                                                                            \
+  vec4(uintBitsToFloat(bakedWord##t##_8), uintBitsToFloat(bakedWord##t##_9),                             \
+       uintBitsToFloat(bakedWord##u##_0), uintBitsToFloat(bakedWord##u##_1))
 
 // The items, by the tens their words start at (BAKED_*_WORD / 10 + k * BAKED_*_STRIDE / 10).
-// Sphere: centerRadius, material. Plane: normalDistance, tangentScale, binormal, uvOffset,
-// solidOffset, material. Light: position, color. Material: ambient, diffuse, specular, color1,
+// Sphere: centerRadius, texRotation, solidOffset, material, uOffset, vOffset, clampV. Plane:
+// normalDistance, tangentScale, binormal, uvOffset, solidOffset, texRotation, imageRight,
+// imageDown, material. Light: position, color. Material: ambient, diffuse, specular, color1,
 // color2, params, textureKind, octaves, imageLayer.
-#define BAKED_SPHERE(t) Sphere(BAKED_VEC4(t, 0, 1, 2, 3), bakedWord##t##_4, 0u, 0u, 0u)
-#define BAKED_PLANE(t, u, v)                                                                               \
-  Plane(BAKED_VEC4(t, 0, 1, 2, 3), BAKED_VEC4(t, 4, 5, 6, 7),                                              \
-        vec4(uintBitsToFloat(bakedWord##t##_8), uintBitsToFloat(bakedWord##t##_9),                         \
-             uintBitsToFloat(bakedWord##u##_0), uintBitsToFloat(bakedWord##u##_1)),                        \
-        BAKED_VEC4(u, 2, 3, 4, 5), BAKED_VEC4(u, 6, 7, 8, 9), bakedWord##v##_0, 0u, 0u, 0u)
+#define BAKED_SPHERE(t, u)                                                                                 \
+  Sphere(BAKED_VEC4(t, 0, 1, 2, 3), BAKED_VEC4(t, 4, 5, 6, 7), BAKED_VEC4_ACROSS(t, u), bakedWord##u##_2,  \
+         uintBitsToFloat(bakedWord##u##_3), uintBitsToFloat(bakedWord##u##_4), bakedWord##u##_5)
+#define BAKED_PLANE(t, u, v, w)                                                                            \
+  Plane(BAKED_VEC4(t, 0, 1, 2, 3), BAKED_VEC4(t, 4, 5, 6, 7), BAKED_VEC4_ACROSS(t, u),                    \
+        BAKED_VEC4(u, 2, 3, 4, 5), BAKED_VEC4(u, 6, 7, 8, 9), BAKED_VEC4(v, 0, 1, 2, 3),                  \
+        BAKED_VEC4(v, 4, 5, 6, 7), BAKED_VEC4_ACROSS(v, w), bakedWord##w##_2, 0u, 0u, 0u)
 #define BAKED_LIGHT(t) Light(BAKED_VEC4(t, 0, 1, 2, 3), BAKED_VEC4(t, 4, 5, 6, 7))
 #define BAKED_MATERIAL(t, u, v)                                                                            \
-  Material(BAKED_VEC4(t, 0, 1, 2, 3), BAKED_VEC4(t, 4, 5, 6, 7),                                           \
-           vec4(uintBitsToFloat(bakedWord##t##_8), uintBitsToFloat(bakedWord##t##_9),                      \
-                uintBitsToFloat(bakedWord##u##_0), uintBitsToFloat(bakedWord##u##_1)),                     \
+  Material(BAKED_VEC4(t, 0, 1, 2, 3), BAKED_VEC4(t, 4, 5, 6, 7), BAKED_VEC4_ACROSS(t, u),                 \
            BAKED_VEC4(u, 2, 3, 4, 5), BAKED_VEC4(u, 6, 7, 8, 9), BAKED_VEC4(v, 0, 1, 2, 3),               \
            bakedWord##v##_4, bakedWord##v##_5, bakedWord##v##_6, 0u)
 
 // Slot k of each kind (k is a constant once the driver unrolls the caller's loop; slots past
 // MAX_BAKED_* give the last one).
 Sphere bakedSphere(uint k) {
-  return k == 0u ? BAKED_SPHERE(0) : k == 1u ? BAKED_SPHERE(1) : k == 2u ? BAKED_SPHERE(2) : BAKED_SPHERE(3);
+  return k == 0u ? BAKED_SPHERE(0, 1) : k == 1u ? BAKED_SPHERE(2, 3) : k == 2u ? BAKED_SPHERE(4, 5) : BAKED_SPHERE(6, 7);
 }
 Plane bakedPlane(uint k) {
-  return k == 0u ? BAKED_PLANE(4, 5, 6) : k == 1u ? BAKED_PLANE(7, 8, 9) : k == 2u ? BAKED_PLANE(10, 11, 12)
-                                                                                  : BAKED_PLANE(13, 14, 15);
+  return k == 0u ? BAKED_PLANE(8, 9, 10, 11) : k == 1u ? BAKED_PLANE(12, 13, 14, 15)
+       : k == 2u ? BAKED_PLANE(16, 17, 18, 19) : BAKED_PLANE(20, 21, 22, 23);
 }
 Light bakedLight(uint k) {
-  return k == 0u ? BAKED_LIGHT(16) : k == 1u ? BAKED_LIGHT(17) : k == 2u ? BAKED_LIGHT(18) : BAKED_LIGHT(19);
+  return k == 0u ? BAKED_LIGHT(24) : k == 1u ? BAKED_LIGHT(25) : k == 2u ? BAKED_LIGHT(26) : BAKED_LIGHT(27);
 }
 Material bakedMaterial(uint k) {
-  return k == 0u ? BAKED_MATERIAL(20, 21, 22) : k == 1u ? BAKED_MATERIAL(23, 24, 25)
-       : k == 2u ? BAKED_MATERIAL(26, 27, 28) : k == 3u ? BAKED_MATERIAL(29, 30, 31)
-       : k == 4u ? BAKED_MATERIAL(32, 33, 34) : k == 5u ? BAKED_MATERIAL(35, 36, 37)
-       : k == 6u ? BAKED_MATERIAL(38, 39, 40) : BAKED_MATERIAL(41, 42, 43);
+  return k == 0u ? BAKED_MATERIAL(28, 29, 30) : k == 1u ? BAKED_MATERIAL(31, 32, 33)
+       : k == 2u ? BAKED_MATERIAL(34, 35, 36) : k == 3u ? BAKED_MATERIAL(37, 38, 39)
+       : k == 4u ? BAKED_MATERIAL(40, 41, 42) : k == 5u ? BAKED_MATERIAL(43, 44, 45)
+       : k == 6u ? BAKED_MATERIAL(46, 47, 48) : BAKED_MATERIAL(49, 50, 51);
 }

@@ -41,8 +41,8 @@ using uvec4 = glm::uvec4;
 // What one render can hold: the uniform blocks' sizes, each within the 64 KiB of
 // maxUniformBufferRange on lavapipe and NVIDIA (buildGpuScene reports a scene over them).
 #define MAX_MATERIALS 256  // 256 * 112 bytes = 28 KiB
-#define MAX_SPHERES 1024   // 1024 * 32 bytes = 32 KiB
-#define MAX_PLANES 256     // 256 * 96 bytes = 24 KiB
+#define MAX_SPHERES 1024   // 1024 * 64 bytes = 64 KiB
+#define MAX_PLANES 256     // 256 * 144 bytes = 36 KiB
 #define MAX_LIGHTS 256     // 256 * 32 bytes = 8 KiB
 
 // Texture kinds (Material.textureKind; one row each in host/texture_kinds.cpp, GLSL in
@@ -74,6 +74,7 @@ using uvec4 = glm::uvec4;
 #define SPEC_SPHERE_COUNT 5  // the scene's counts, or COUNT_FROM_FRAME: read Frame's at run time
 #define SPEC_PLANE_COUNT 6
 #define SPEC_LIGHT_COUNT 7
+#define SPEC_TEXTURE_PLACEMENT 10  // false: no object's placement needs the kernel (mapping.glsl)
 
 // Scenes with at most this many spheres, planes or lights get kernels with the count
 // built in (the loops over them unrolled); larger ones loop to Frame's count. On lavapipe a
@@ -87,8 +88,8 @@ using uvec4 = glm::uvec4;
 // (and so the camera-relative positions) is fixed. Item k of a kind is laid out as its uniform
 // block's struct from word BAKED_<KIND>_WORD + k * BAKED_<KIND>_STRIDE; strides are whole tens,
 // so that shaders/baked.glsl names an item's words by their tens.
-#define BAKED_SPHERE_STRIDE 10u       // words per item (sizeof(Sphere) / 4 = 8, padded)
-#define BAKED_PLANE_STRIDE 30u        // 24
+#define BAKED_SPHERE_STRIDE 20u       // words per item (sizeof(Sphere) / 4 = 16, padded)
+#define BAKED_PLANE_STRIDE 40u        // 36
 #define BAKED_LIGHT_STRIDE 10u        // 8
 #define BAKED_MATERIAL_STRIDE 30u     // 28
 #define SPEC_BAKED 8                  // 1: the kernel reads the BAKED_* words, not the uniform blocks
@@ -98,11 +99,11 @@ using uvec4 = glm::uvec4;
 #define MAX_BAKED_PLANES 4u
 #define MAX_BAKED_LIGHTS 4u
 #define MAX_BAKED_MATERIALS 8u   // one per object: any scene within the object limits
-#define BAKED_SPHERE_WORD 0u          // words 0-39: 4 spheres
-#define BAKED_PLANE_WORD 40u          // 40-159: 4 planes
-#define BAKED_LIGHT_WORD 160u         // 160-199: 4 lights
-#define BAKED_MATERIAL_WORD 200u      // 200-439: 8 materials
-#define BAKED_WORD_COUNT 440
+#define BAKED_SPHERE_WORD 0u          // words 0-79: 4 spheres
+#define BAKED_PLANE_WORD 80u          // 80-239: 4 planes
+#define BAKED_LIGHT_WORD 240u         // 240-279: 4 lights
+#define BAKED_MATERIAL_WORD 280u      // 280-519: 8 materials
+#define BAKED_WORD_COUNT 520
 
 // The largest texture coordinate the kernel forms (mapping.glsl, clampTexCoord) or the host
 // packs: far beyond float resolution (past 2^24 no fraction is left), and small enough that
@@ -160,25 +161,35 @@ struct Frame {
   uint pad1;
 };
 
+// Texture placement (docs/textures.md, "Texture placement") is packed by the host in double:
+// texRotation is the unit quaternion (xyz, w) of R^-1, the inverse of tex_rotate ((0, 0, 0, 1)
+// without one), which the mapping applies to the normal (sphere) or the camera-relative
+// position (plane's solid coordinate).
 struct Sphere {
   vec4 centerRadius;  // xyz: centre relative to the camera, w: radius
+  vec4 texRotation;   // quaternion of R^-1
+  vec4 solidOffset;   // xyz: tex_offset of a solid kind (0 for 2D kinds), w: tex_scale s
   uint material;
-  uint pad0;
-  uint pad1;
-  uint pad2;
+  float uOffset;      // tex_offset.xy of a 2D kind, added to (u, v)
+  float vOffset;
+  uint clampV;        // 1: image rows clamp at the poles (s = 1 and no v offset), 0: v repeats
 };
 
-// Plane x.n = d with its texture frame, computed on the host in double:
-// tangent and binormal are unit, orthogonal to the normal and each other. With x the
-// camera-relative position, the texture coordinates are u_p/s = x.t/s + uvOffset.x (the
-// notes' o' = d n drops out: n.t = 0) and solid = x/s + solidOffset, the offsets holding
-// the camera's position reduced modulo the texture's period (host, in double).
+// Plane x.n = d with its texture frame, computed on the host in double: tangent and
+// binormal are unit, orthogonal to the normal and each other (the placed frame R t', R b').
+// With x the camera-relative position, the texture coordinates are u_p/s = x.t/s + uvOffset.x
+// (the notes' o' = d n drops out: n.t = 0), solid = R^-1 x / s + solidOffset and the image
+// lookup (column, row) = x.(imageRight, imageDown)/s + their w, the offsets holding the
+// camera's position and tex_offset reduced modulo the texture's period (host, in double).
 struct Plane {
   vec4 normalDistance;  // xyz: unit normal n, w: distance from the camera, d - n.eye
   vec4 tangentScale;    // xyz: tangent t, w: tex_scale s
   vec4 binormal;        // xyz: binormal b
-  vec4 uvOffset;        // xy: fractional part of (eye.t, eye.b)/s; zw: integer part mod 4096
-  vec4 solidOffset;     // xyz: eye/s modulo the solid texture's period
+  vec4 uvOffset;        // xy: fractional part of (eye.t, eye.b)/s + tex_offset; zw: integer part mod 4096
+  vec4 solidOffset;     // xyz: (R^-1 (eye - o) + o)/s + tex_offset modulo the solid texture's period
+  vec4 texRotation;     // quaternion of R^-1 (the solid coordinate)
+  vec4 imageRight;      // xyz: the image's rows run along it (unit, in the plane), w: offset mod 1
+  vec4 imageDown;       // xyz: from the image's top row to its bottom (unit, in the plane), w: offset
   uint material;
   uint pad0;
   uint pad1;
@@ -212,8 +223,8 @@ struct NoiseTable {
 
 #ifdef __cplusplus
 static_assert(sizeof(Frame) == 144, "Frame layout");
-static_assert(sizeof(Sphere) == 32, "Sphere layout");
-static_assert(sizeof(Plane) == 96, "Plane layout");
+static_assert(sizeof(Sphere) == 64, "Sphere layout");
+static_assert(sizeof(Plane) == 144, "Plane layout");
 static_assert(sizeof(Material) == 112, "Material layout");
 static_assert(sizeof(Light) == 32, "Light layout");
 static_assert(sizeof(NoiseTable) == NOISE_PERM_SIZE * 4, "NoiseTable layout");

@@ -5,12 +5,6 @@
 #ifndef RAYTEX_FOOTPRINT_GLSL
 #define RAYTEX_FOOTPRINT_GLSL
 
-// Texture-space derivatives for one sample step in x and in y.
-struct Footprint {
-  vec2 duvdx, duvdy;  // of (u + tile): one texture tile is 1
-  vec3 dsdx, dsdy;    // of the solid coordinate
-};
-
 // A differential ray parallel to the surface has no intersection: treat it as a huge
 // footprint, so filtered textures fall back to their average instead of aliasing.
 const float FOOTPRINT_MAX = 1.0e8;
@@ -26,42 +20,29 @@ vec3 tangentPlaneOffset(vec3 o, vec3 p, vec3 n, vec3 dir) {
 vec2 uvWidth(Footprint f) { return min(max(abs(f.duvdx), abs(f.duvdy)), vec2(FOOTPRINT_MAX)); }
 vec3 solidWidth(Footprint f) { return min(max(abs(f.dsdx), abs(f.dsdy)), vec3(FOOTPRINT_MAX)); }
 
+// The mapping of the hit's shape at the surface s; with the surface steps dpdx, dpdy also its
+// footprint (mapping.glsl).
+TexCoord texCoordAt(Hit hit, Surface s, vec3 dpdx, vec3 dpdy, out Footprint fp) {
+  if (hit.kind == HIT_PLANE) return planeTexCoord(planeAt(hit.index), s.p, dpdx, dpdy, fp);
+  return sphereTexCoord(sphereAt(hit.index), s.outward, dpdx, dpdy, fp);
+}
+
 // Texture coordinates of the surface point p + dp (dp in the tangent plane at the hit):
 // exact on planes; on spheres the point is projected back onto the sphere.
 TexCoord texCoordNear(Hit hit, vec3 p, vec3 dp) {
   if (hit.kind == HIT_PLANE) return planeTexCoord(planeAt(hit.index), p + dp);
-  vec4 cr = sphereAt(hit.index).centerRadius;
-  return sphereTexCoord(normalize(p + dp - cr.xyz), SPHERE_LAT_LONG);
+  Sphere sp = sphereAt(hit.index);
+  return sphereTexCoord(sp, normalize(p + dp - sp.centerRadius.xyz), SPHERE_LAT_LONG);
 }
 
-// Texture-space derivatives of a surface step dp at the hit.
-void textureDerivatives(Hit hit, Surface s, vec3 dp, out vec2 duv, out vec3 ds) {
-  if (hit.kind == HIT_PLANE) {
-    Plane pl = planeAt(hit.index);
-    float invScale = 1.0 / pl.tangentScale.w;
-    duv = vec2(dot(dp, pl.tangentScale.xyz), dot(dp, pl.binormal.xyz)) * invScale;
-    ds = dp * invScale;
-  } else {
-    vec4 cr = sphereAt(hit.index).centerRadius;
-    vec3 n = normalize(s.p - cr.xyz);  // outward, as the mapping uses
-    vec3 dn = (dp - n * dot(n, dp)) / cr.w;
-    // u = (atan2(n_z, n_x) + pi) / 2pi, v = (asin(n_y) + pi/2) / pi, differentiated; both
-    // blow up at the poles, where the widths grow and the filter returns the average.
-    float rho2 = max(n.x * n.x + n.z * n.z, 1.0e-12);
-    duv = vec2((n.x * dn.z - n.z * dn.x) / (2.0 * 3.14159265 * rho2), dn.y / (3.14159265 * sqrt(rho2)));
-    ds = dn * 0.5;  // solid = (n + 1) / 2
-  }
-}
-
-// The footprint of the sample at film position `film` (pixel units) whose neighbours lie
-// `spacing` pixels to the right and below; also returns the surface steps dpdx, dpdy.
-Footprint footprintAt(Hit hit, Surface s, vec3 o, vec2 film, float spacing, out vec3 dpdx, out vec3 dpdy) {
+// The texture coordinate and footprint of the sample at film position `film` (pixel units)
+// whose neighbours lie `spacing` pixels to the right and below; also returns the surface
+// steps dpdx, dpdy.
+TexCoord footprintAt(Hit hit, Surface s, vec3 o, vec2 film, float spacing, out Footprint fp, out vec3 dpdx,
+                     out vec3 dpdy) {
   dpdx = tangentPlaneOffset(o, s.p, s.n, primaryRayUnnormalized(film + vec2(spacing, 0.0)));
   dpdy = tangentPlaneOffset(o, s.p, s.n, primaryRayUnnormalized(film + vec2(0.0, spacing)));
-  Footprint f;
-  textureDerivatives(hit, s, dpdx, f.duvdx, f.dsdx);
-  textureDerivatives(hit, s, dpdy, f.duvdy, f.dsdy);
-  return f;
+  return texCoordAt(hit, s, dpdx, dpdy, fp);
 }
 
 #endif  // RAYTEX_FOOTPRINT_GLSL

@@ -3,6 +3,7 @@
 struct Surface {
   vec3 p;        // hit point (on the surface)
   vec3 n;        // unit normal, facing the viewer
+  vec3 outward;  // unit normal, outward (the sphere mapping's)
   TexCoord tc;
   uint material;
 };
@@ -18,8 +19,9 @@ Surface surfaceAt(Hit hit, vec3 o, vec3 d) {
     vec3 toHit = o + hit.t * d - sp.centerRadius.xyz;
     vec3 outward = dot(toHit, toHit) > 0.0 ? normalize(toHit) : -d;
     s.p = sp.centerRadius.xyz + sp.centerRadius.w * outward;
-    s.tc = sphereTexCoord(outward, SPHERE_LAT_LONG);  // the mapping uses the outward normal, inside or out
+    s.tc = sphereTexCoord(sp, outward, SPHERE_LAT_LONG);  // the mapping uses the outward normal, inside or out
     s.n = outward;
+    s.outward = outward;
     s.material = sp.material;
   } else {
     Plane pl = planeAt(hit.index);
@@ -29,6 +31,7 @@ Surface surfaceAt(Hit hit, vec3 o, vec3 d) {
     s.p -= n * (dot(n, s.p) - pl.normalDistance.w);
     s.tc = planeTexCoord(pl, s.p);
     s.n = pl.normalDistance.xyz;
+    s.outward = s.n;
     s.material = pl.material;
   }
   if (dot(s.n, d) > 0.0) s.n = -s.n;  // seen from behind (plane underside, inside a sphere)

@@ -24,6 +24,7 @@ layout(constant_id = SPEC_OUTPUT_MODE) const uint OUTPUT_MODE = OUTPUT_SHADED;
 layout(constant_id = SPEC_SAMPLES_PER_SIDE) const uint SAMPLES_PER_SIDE = 1u;
 layout(constant_id = SPEC_PROGRESSIVE) const bool PROGRESSIVE = false;
 layout(constant_id = SPEC_BAKED) const bool BAKED = false;
+layout(constant_id = SPEC_TEXTURE_PLACEMENT) const bool TEXTURE_PLACEMENT = true;
 layout(constant_id = SPEC_BAKED_MATERIAL_COUNT) const uint BAKED_MATERIAL_COUNT = 1u;
 
 layout(std430, binding = BINDING_OUTPUT) writeonly buffer OutputBlock { vec4 outputPixels[]; };
@@ -134,8 +135,9 @@ const uint MAX_PROBES = 8u;
 // the surface and 1/K of the length (anisotropic filtering).
 vec3 albedoAt(Hit hit, Surface s, Material m, vec3 origin, vec2 film, float spacing) {
   vec3 dpdx, dpdy;
-  Footprint fp = footprintAt(hit, s, origin, film, spacing, dpdx, dpdy);
-  if (!hasClosedFormFilter(m.textureKind)) return textureColor(m, s.tc, fp);
+  Footprint fp;
+  TexCoord tc = footprintAt(hit, s, origin, film, spacing, fp, dpdx, dpdy);
+  if (!hasClosedFormFilter(m.textureKind)) return textureColor(m, tc, fp);
   float lx = length(dpdx), ly = length(dpdy);
   bool alongX = lx >= ly;
   float ratio = alongX ? lx / max(ly, 1.0e-30) : ly / max(lx, 1.0e-30);
@@ -143,7 +145,7 @@ vec3 albedoAt(Hit hit, Surface s, Material m, vec3 origin, vec2 film, float spac
   // than a quarter of one (a footprint inside a check is already exact).
   float checks = alongX ? filteredCells(m, fp.duvdx, fp.dsdx) : filteredCells(m, fp.duvdy, fp.dsdy);
   uint k = uint(clamp(ceil(min(ratio, 4.0 * checks)), 1.0, float(MAX_PROBES)));
-  if (k == 1u) return textureColor(m, s.tc, fp);
+  if (k == 1u) return textureColor(m, tc, fp);
   if (alongX) {
     fp.duvdx /= float(k);
     fp.dsdx /= float(k);

@@ -47,6 +47,54 @@ TEST(GpuScene, CourseSceneUploadsOnlyTheMaterialsItUses) {
   EXPECT_EQ(g.noise.pairs[1], glm::uvec4(0));
 }
 
+// Without placement the packed placement is the identity, which the kernel applies exactly;
+// with it the plane's axes are the turned ones and the image axes follow the upright rule.
+TEST(GpuScene, PlacementPacksTheTurnedAxesAndTheIdentityWithoutIt) {
+  Scene scene = parseSceneText(
+      "material m { texture = checker; }\ncamera { eye = (0.3, 3, 12); }\n"
+      "sphere { m; }\nplane { m; }\n"
+      "sphere { m; tex_rotate = (0, 90, 0); tex_scale = 0.5; tex_offset = (0.25, 3.5, 0); }\n"
+      "plane { m; tex_rotate = (0, 90, 0); tex_scale = 2; tex_offset = (0.5, 0.25, 0); }\n",
+      "t.cfg");
+  GpuScene g = buildGpuScene(scene, 64, 48);
+  EXPECT_EQ(g.spheres[0].texRotation, glm::vec4(0, 0, 0, 1));
+  EXPECT_EQ(g.spheres[0].solidOffset, glm::vec4(0, 0, 0, 1));
+  EXPECT_EQ(g.spheres[0].clampV, 1u);
+  EXPECT_EQ(g.planes[0].texRotation, glm::vec4(0, 0, 0, 1));
+  // The floor's image: rows along +x, its top towards -z (so down is +z); the eye's x, z
+  // reduced mod 1 are the offsets of column and row.
+  EXPECT_EQ(g.planes[0].imageRight, glm::vec4(1, 0, 0, 0.3f));
+  EXPECT_EQ(g.planes[0].imageDown, glm::vec4(0, 0, 1, 0));
+  // A quarter turn about +y: R^-1 is the half angle's quaternion conjugated.
+  const float h = float(std::sqrt(0.5));
+  for (int k : {0, 1, 2, 3}) {
+    EXPECT_NEAR(g.spheres[1].texRotation[k], glm::vec4(0, -h, 0, h)[k], 1e-7f);
+    EXPECT_NEAR(g.planes[1].texRotation[k], glm::vec4(0, -h, 0, h)[k], 1e-7f);
+  }
+  EXPECT_EQ(g.spheres[1].solidOffset.w, 0.5f);
+  EXPECT_EQ(g.spheres[1].uOffset, 0.25f);
+  EXPECT_EQ(g.spheres[1].vOffset, 1.5f);  // mod 2: the checker's tile parity is kept
+  EXPECT_EQ(g.spheres[1].clampV, 0u);
+  // The floor's u axis +x turned a quarter about +y is -z, v's +z is +x.
+  for (int k : {0, 1, 2}) {
+    EXPECT_NEAR(g.planes[1].tangentScale[k], glm::vec4(0, 0, -1, 0)[k], 1e-7f);
+    EXPECT_NEAR(g.planes[1].binormal[k], glm::vec4(1, 0, 0, 0)[k], 1e-7f);
+  }
+  EXPECT_EQ(g.planes[1].tangentScale.w, 2.0f);
+  // u at the eye: (eye . (0, 0, -1)) / 2 + 0.5 = -5.5: tile -6, fraction 0.5; v: 0.15 + 0.25.
+  EXPECT_NEAR(g.planes[1].uvOffset.x, 0.5f, 1e-6f);
+  EXPECT_NEAR(g.planes[1].uvOffset.y, 0.4f, 1e-6f);
+  EXPECT_EQ(g.planes[1].uvOffset.z, 4096.0f - 6.0f);
+  // The kernel applies placement (SPEC_TEXTURE_PLACEMENT) only where a packed frame cannot
+  // hold it: a turned plane or a placed sphere, not a plane's tex_scale or tex_offset.
+  EXPECT_EQ(g.shape.placed, 1u);
+  EXPECT_EQ(sceneShape(parseSceneText("plane { tex_scale = 2; tex_offset = (1, 2, 3); }", "t.cfg")).placed, 0u);
+  EXPECT_EQ(sceneShape(parseSceneText("plane { tex_rotate = (0, 1, 0); }", "t.cfg")).placed, 1u);
+  EXPECT_EQ(sceneShape(parseSceneText("sphere { tex_scale = 2; }", "t.cfg")).placed, 1u);
+  EXPECT_EQ(sceneShape(parseSceneText("sphere { tex_offset = (0, 0, 1); }", "t.cfg")).placed, 1u);
+  EXPECT_EQ(sceneShape(parseSceneText("sphere { }", "t.cfg")).placed, 0u);
+}
+
 TEST(GpuScene, ShapeHasTheKindsPerShapeAndTheCountsUpToTheLimit) {
   Scene scene = parseSceneFile(kSourceDir + "/scenes/textures.cfg");
   SceneShape shape = buildGpuScene(scene, 8, 8).shape;

@@ -276,3 +276,80 @@ TEST(MappingSphere, UvInUnitSquareForRandomNormals) {
     ASSERT_NEAR(glm::length(back - n), 0.0, 1e-12);
   }
 }
+
+// --- texture placement and image orientation (docs/textures.md) ---------------------------
+
+TexturePlacement placement(glm::dvec3 rotate, double scale = 1.0, glm::dvec3 offset = glm::dvec3(0.0)) {
+  TexturePlacement p;
+  p.rotate = rotate;
+  p.scale = scale;
+  p.offset = offset;
+  return p;
+}
+
+TEST(MappingPlacement, RotationIsRzRyRxRightHanded) {
+  // A quarter turn about x takes y to z, about y takes z to x, about z takes x to y.
+  expectVecNear(placementRotation({90, 0, 0}) * glm::dvec3(0, 1, 0), glm::dvec3(0, 0, 1), 1e-15, "x");
+  expectVecNear(placementRotation({0, 90, 0}) * glm::dvec3(0, 0, 1), glm::dvec3(1, 0, 0), 1e-15, "y");
+  expectVecNear(placementRotation({0, 0, 90}) * glm::dvec3(1, 0, 0), glm::dvec3(0, 1, 0), 1e-15, "z");
+  // x first, about the fixed axes: (90, 90, 0) takes y to z (x), then z to x (y).
+  expectVecNear(placementRotation({90, 90, 0}) * glm::dvec3(0, 1, 0), glm::dvec3(1, 0, 0), 1e-15, "x then y");
+}
+
+TEST(MappingPlacement, HalfTurnAboutTheSphereAxisTurnsTheMap) {
+  std::mt19937 rng(7);
+  std::normal_distribution<double> g;
+  for (int i = 0; i < 100; ++i) {
+    glm::dvec3 n = glm::normalize(glm::dvec3(g(rng), g(rng), g(rng)));
+    TexCoordD turned = sphereTexCoord(placement({0, 180, 0}), n);
+    TexCoordD expected = sphereTexCoord(glm::dvec3(-n.x, n.y, -n.z));
+    EXPECT_NEAR(std::fmod(turned.uv.x - expected.uv.x + 1.5, 1.0), 0.5, 1e-12);
+    EXPECT_NEAR(turned.uv.y, expected.uv.y, 1e-12);
+    EXPECT_TRUE(turned.clampV);
+  }
+}
+
+TEST(MappingPlacement, SphereScaleRepeatsVAndOffsetShiftsLast) {
+  const glm::dvec3 n = glm::normalize(glm::dvec3(0.3, 0.8, -0.5));
+  const TexCoordD plain = sphereTexCoord(n);
+  TexCoordD tc = sphereTexCoord(placement({0, 0, 0}, 0.25, {0.1, 0.2, 0.3}), n);
+  glm::dvec2 unwrapped = plain.uv * 4.0 + glm::dvec2(0.1, 0.2);
+  expectVecNear(glm::dvec3(tc.tile + tc.uv, 0), glm::dvec3(unwrapped, 0), 1e-12, "uv / s + offset");
+  EXPECT_FALSE(tc.clampV);  // v repeats
+  expectVecNear(tc.solid, plain.solid * 4.0 + glm::dvec3(0.1, 0.2, 0.3), 1e-12, "solid / s + offset");
+  expectVecNear(glm::dvec3(tc.image, 0), glm::dvec3(1.0 - tc.uv.x, 1.0 - tc.uv.y, 0), 0.0, "image");
+}
+
+TEST(MappingPlacement, TurnAboutThePlaneNormalTurnsThePatternInThePlane) {
+  // The floor y = -2 (t = +x, b = +z), its texture a quarter turn about +y: the point the
+  // unturned u axis reached, (1, 0, 0) from the origin, lies at R (1, 0, 0) = (0, 0, -1).
+  const PlaneFrame f = courseFloor();
+  TexCoordD tc = planeTexCoord(f, placement({0, 90, 0}), glm::dvec3(0, -2, -1));
+  expectVecNear(glm::dvec3(tc.tile + tc.uv, 0), glm::dvec3(1, 0, 0), 1e-12, "u axis turned");
+  tc = planeTexCoord(f, placement({0, 90, 0}, 2.0, {0.25, 0.5, 0}), glm::dvec3(1, -2, 0));
+  expectVecNear(glm::dvec3(tc.tile + tc.uv, 0), glm::dvec3(0.25, 1.0, 0), 1e-12, "v axis turned, / s, + offset");
+  expectVecNear(tc.solid, glm::dvec3(0, -2, 1) / 2.0 + glm::dvec3(0.25, 0.5, 0), 1e-12, "solid p' / s + offset");
+}
+
+TEST(MappingPlacement, ImagesReadUprightOnPlanes) {
+  // The floor seen from above: the image's top towards -z, its left edge at -x; its top-left
+  // corner at the origin d n.
+  TexCoordD tc = planeTexCoord(courseFloor(), 1.0, glm::dvec3(0.1, -2, 0.2));
+  expectVecNear(glm::dvec3(tc.image, 0), glm::dvec3(0.1, 0.2, 0), 1e-12, "floor");
+  // A wall facing +z (top +y, right +x) and one facing -x (top +y, right +z).
+  tc = planeTexCoord(planeFrame({0, 0, 1}, 0), 1.0, glm::dvec3(0.1, -0.2, 0));
+  expectVecNear(glm::dvec3(tc.image, 0), glm::dvec3(0.1, 0.2, 0), 1e-12, "+z wall");
+  tc = planeTexCoord(planeFrame({-1, 0, 0}, 0), 1.0, glm::dvec3(0, -0.2, 0.1));
+  expectVecNear(glm::dvec3(tc.image, 0), glm::dvec3(0.1, 0.2, 0), 1e-12, "-x wall");
+  // The ceiling seen from below: top towards -z, right -x.
+  tc = planeTexCoord(planeFrame({0, -1, 0}, 0), 1.0, glm::dvec3(-0.1, 0, 0.2));
+  expectVecNear(glm::dvec3(tc.image, 0), glm::dvec3(0.1, 0.2, 0), 1e-12, "ceiling");
+  // The oblique (1, 1, 1): the top along +y projected, tiling seamless across the corner.
+  const PlaneFrame oblique = planeFrame({1, 1, 1}, 0);
+  const glm::dvec3 up = imageUpAxis(oblique.normal), right = glm::cross(up, oblique.normal);
+  expectVecNear(up, glm::normalize(glm::dvec3(-1, 2, -1)), 1e-15, "up");
+  tc = planeTexCoord(oblique, 1.0, 0.3 * right - 0.4 * up);
+  expectVecNear(glm::dvec3(tc.image, 0), glm::dvec3(0.3, 0.4, 0), 1e-12, "oblique");
+  tc = planeTexCoord(oblique, 1.0, -0.3 * right + 0.4 * up);
+  expectVecNear(glm::dvec3(tc.image, 0), glm::dvec3(0.7, 0.6, 0), 1e-12, "oblique, next tile");
+}

@@ -134,7 +134,7 @@ TEST(ParserNotes, ExcerptVerbatimWithIncludedMaterials) {
   EXPECT_EQ(s.spheres[0].material, materialIndex(s, "aSolidChecker"));
   expectVec(s.planes[0].normal, 0, 1, 0);
   EXPECT_FLOAT_EQ(s.planes[0].distance, -2.0f);
-  EXPECT_FLOAT_EQ(s.planes[0].texScale, 5.0f);
+  EXPECT_FLOAT_EQ(s.planes[0].placement.scale, 5.0f);
   EXPECT_EQ(s.planes[0].material, materialIndex(s, "aChecker"));
   EXPECT_EQ(s.spheres[0].loc.line, 4);  // after the include line and the comment
   EXPECT_EQ(s.planes[0].loc.line, 18);
@@ -162,7 +162,7 @@ TEST(ParserScenes, TexturesCfg) {
   EXPECT_EQ(s.materials[size_t(s.spheres[0].material)].name, "aSolidChecker");
   expectVec(s.planes[0].normal, 0, 1, 0);
   EXPECT_FLOAT_EQ(s.planes[0].distance, -2.0f);
-  EXPECT_FLOAT_EQ(s.planes[0].texScale, 5.0f);
+  EXPECT_FLOAT_EQ(s.planes[0].placement.scale, 5.0f);
   ASSERT_GE(s.planes[0].material, 0);
   EXPECT_EQ(s.materials[size_t(s.planes[0].material)].name, "aChecker");
 
@@ -260,7 +260,7 @@ TEST(ParserSyntax, NumbersSignsExponents) {
   expectVec(s.spheres[1].center, 100.0f, -15.0f, 5.0f);
   EXPECT_FLOAT_EQ(s.spheres[1].radius, 2.5f);
   EXPECT_FLOAT_EQ(s.planes[0].distance, 0.0f);
-  EXPECT_FLOAT_EQ(s.planes[0].texScale, 0.25f);
+  EXPECT_FLOAT_EQ(s.planes[0].placement.scale, 0.25f);
   EXPECT_FLOAT_EQ(s.planes[1].distance, -1.2f);
 }
 
@@ -278,7 +278,7 @@ TEST(ParserSyntax, ObjectsWithoutKeysUseDefaults) {
   EXPECT_FLOAT_EQ(s.spheres[0].radius, ds.radius);
   EXPECT_EQ(s.spheres[0].material, -1);
   expectVec(s.planes[0].normal, dp.normal.x, dp.normal.y, dp.normal.z);
-  EXPECT_FLOAT_EQ(s.planes[0].texScale, 1.0f);
+  EXPECT_FLOAT_EQ(s.planes[0].placement.scale, 1.0f);
   EXPECT_EQ(s.planes[0].material, -1);
   EXPECT_TRUE(s.materials.empty());
   EXPECT_TRUE(s.lights.empty());
@@ -877,4 +877,44 @@ TEST(ParserRender, Errors) {
   EXPECT_EQ(errorOf("render { filter = bilinear; }\n"), "t.cfg:1:19: filter must be point or box, got 'bilinear'");
   EXPECT_EQ(errorOf("render { samples = 4; }\n"), "t.cfg:1:10: unknown key 'samples' in render");
   EXPECT_EQ(errorOf("render { }\nrender { }\n"), "t.cfg:2:1: duplicate render (first defined at t.cfg:1:1)");
+}
+
+// ---------------------------------------------------------------- texture placement
+
+TEST(ParserPlacement, SpheresAndPlanesTakeEveryPlacementKey) {
+  Scene s = parseSceneText(
+      "material m { texture = marble; }\n"
+      "sphere { tex_rotate = (0, 180, -10.5); tex_scale = 0.5; tex_offset = (1, 2, 3); m; }\n"
+      "plane { m; tex_offset = (-0.25, 0, 7); tex_rotate = (30, 0, 0); }\n"
+      "sphere { }\n",
+      "t.cfg");
+  expectVec(s.spheres[0].placement.rotate, 0, 180, -10.5);
+  EXPECT_EQ(s.spheres[0].placement.scale, 0.5);
+  expectVec(s.spheres[0].placement.offset, 1, 2, 3);
+  expectVec(s.planes[0].placement.rotate, 30, 0, 0);
+  EXPECT_EQ(s.planes[0].placement.scale, 1.0);
+  expectVec(s.planes[0].placement.offset, -0.25, 0, 7);
+  expectVec(s.spheres[1].placement.rotate, 0, 0, 0);  // the defaults: no placement
+  EXPECT_EQ(s.spheres[1].placement.scale, 1.0);
+  expectVec(s.spheres[1].placement.offset, 0, 0, 0);
+}
+
+TEST(ParserPlacement, BadPlacementsSayWhere) {
+  EXPECT_EQ(errorOf("sphere { tex_scale = -1; }"), "t.cfg:1:22: tex_scale must be > 0, got -1");
+  EXPECT_EQ(errorOf("plane { tex_rotate = (0, 0, 361); }"), "t.cfg:1:22: tex_rotate angles must be from -360 to 360 degrees");
+  EXPECT_EQ(errorOf("sphere { tex_rotate = (1, 2); }"), "t.cfg:1:23: expected 3 numbers, got 2");
+  EXPECT_EQ(errorOf("sphere { tex_offset = (0, 0, 0); tex_offset = (1, 0, 0); }"),
+            "t.cfg:1:34: duplicate key 'tex_offset' in sphere (first given at t.cfg:1:10)");
+  // A 2D kind reads (u, v) only.
+  EXPECT_EQ(errorOf("material m { texture = checker; }\nplane { tex_offset = (0, 0, 1); m; }"),
+            "t.cfg:2:22: tex_offset's third component must be 0 on a checker texture (it offsets (u, v) only)");
+  EXPECT_EQ(errorOf("material m { texture = checker; }\nplane { tex_offset = (0.5, 0.5, 0); m; }"), "<no error>");
+  // Placement belongs to the object, not to its material or texture.
+  EXPECT_EQ(errorOf("material m { tex_scale = 2; }"),
+            "t.cfg:1:14: 'tex_scale' is not a key of material 'm': texture placement belongs in the sphere or plane block");
+  EXPECT_EQ(errorOf("material m { texture = wood { tex_offset = (1, 0, 0); } }"),
+            "t.cfg:1:31: 'tex_offset' is not a key of wood texture: texture placement belongs in the sphere or plane "
+            "block");
+  EXPECT_EQ(errorOf("material tex_rotate { }"),
+            "t.cfg:1:10: 'tex_rotate' is a reserved word and cannot name a material");
 }

@@ -65,7 +65,7 @@ void addPlane(Scene& scene, glm::dvec3 normal, double distance, double texScale,
   Plane p;
   p.normal = normal;
   p.distance = distance;
-  p.texScale = texScale;
+  p.placement.scale = texScale;
   p.material = material;
   scene.planes.push_back(p);
 }
@@ -317,12 +317,17 @@ std::vector<NamedScene> degenerateScenes() {
 }
 
 // 8. The checker plane y = 0 and a unit sphere standing on it at x = X, seen from 7 units
-// away with the horizon in view, the camera and the light translated with them.
-Scene farScene(double X) {
+// away with the horizon in view, the camera and the light translated with them; `placed`:
+// with textures turned about the y axis, scaled and offset (the sphere's poles stay at +-y).
+Scene farScene(double X, bool placed = false) {
   const glm::dvec3 at(X, 0.0, 0.0);
   Scene scene = emptyScene();
   addPlane(scene, {0, 1, 0}, 0.0f, 1.0f, addMaterial(scene, TextureKind::Checker));
   addSphere(scene, at + glm::dvec3(0, 1, 0), 1.0, addMaterial(scene, TextureKind::Checker));
+  if (placed) {
+    scene.planes[0].placement = {{0, 33, 0}, 1.3, {0.2, 0.7, 0}};
+    scene.spheres[0].placement = {{0, -50, 0}, 0.6, {0.35, 0.15, 0}};
+  }
   addLight(scene, at + glm::dvec3(3, 8, 2));
   setCamera(scene, at + glm::dvec3(2, 3, 6), at + glm::dvec3(0, 0.5, 0), {0, 1, 0}, 50.0);
   return scene;
@@ -739,15 +744,17 @@ TEST_F(StabilityTest, DegenerateInputsStayFinite) {
 //   1e6    7.0e-6    8.7e-7    (3.1e-2, 1.3e-2: 16 texels of a 512 px texture per unit)
 // Shadows hold at every X too (shading.glsl, offsetOrigin): 0 of 63 shadow pixels lit, 0 of
 // 3429 lit pixels shadowed. (A shadow-ray offset of 1e-4 |p| had lost the shadow from 1e5.)
+// The same holds with placed textures (turned, scaled, offset: folded into the same reduction).
 TEST_F(StabilityTest, FarFromOriginHitsMatchReference) {
   const int w = 80, h = 60;
-  const double offsets[] = {0.0, 1e4, 1e5, 1e6};
+  const double offsets[] = {0.0, 1e4, 1e5, 1e6, 0.0, 1e6};
   std::vector<Scene> scenes;
-  for (double X : offsets) scenes.push_back(farScene(X));
+  for (size_t k = 0; k < std::size(offsets); ++k) scenes.push_back(farScene(offsets[k], k >= 4));
   std::vector<Images> images = renderEach(scenes, w, h, {OUTPUT_COORDS, OUTPUT_SHADED, OUTPUT_ALBEDO});
   for (size_t k = 0; k < scenes.size(); ++k) {
     const double X = offsets[k];
-    SCOPED_TRACE("X = " + fmt(X));
+    const std::string tag = fmt(X) + (k >= 4 ? "_placed" : "");
+    SCOPED_TRACE("X = " + tag);
     const Scene& scene = scenes[k];
     const std::vector<float>& coords = images[k].coords;
     const std::vector<float>& shaded = images[k].shaded;
@@ -796,13 +803,13 @@ TEST_F(StabilityTest, FarFromOriginHitsMatchReference) {
         litLooksShadowed += dark;
       }
     }
-    std::cout << "[far] X = " << fmt(X) << ": worst uv error plane " << fmt(worst[HIT_PLANE]) << ", sphere "
+    std::cout << "[far] X = " << tag << ": worst uv error plane " << fmt(worst[HIT_PLANE]) << ", sphere "
               << fmt(worst[HIT_SPHERE]) << "; " << wrong << " wrong hit/miss, " << skipped << " skipped; "
               << shadowLooksLit << " of " << shadow << " shadow pixels lit, " << litLooksShadowed << " of "
               << lit << " lit pixels shadowed\n";
-    RecordProperty("uv_error_plane_X" + fmt(X), fmt(worst[HIT_PLANE]));
-    RecordProperty("uv_error_sphere_X" + fmt(X), fmt(worst[HIT_SPHERE]));
-    RecordProperty("shadow_pixels_lit_X" + fmt(X),
+    RecordProperty("uv_error_plane_X" + tag, fmt(worst[HIT_PLANE]));
+    RecordProperty("uv_error_sphere_X" + tag, fmt(worst[HIT_SPHERE]));
+    RecordProperty("shadow_pixels_lit_X" + tag,
                    std::to_string(shadowLooksLit) + "/" + std::to_string(shadow));
     EXPECT_EQ(wrong, 0);
     EXPECT_LT(skipped, w * h / 50);
@@ -840,6 +847,12 @@ TEST_F(StabilityTest, FarSceneRendersLikeTheOrigin) {
     addPlane(scene, {1, 0, 0}, X - 6.0, 1.0, floorChecker);  // a wall at x = X - 6
     addSphere(scene, at + glm::dvec3(0, 1, 0), 1.0, checker);
     addSphere(scene, at + glm::dvec3(-2.5, 1, -1), 1.0, turbulence);
+    // Placed textures: the floor's a quarter turn (X stays a whole number of periods along
+    // its turned axes), the wall's and the spheres' any turn (they move with X).
+    scene.planes[0].placement = {{0, 90, 0}, 1.0, {0.3, 0.1, 0.7}};
+    scene.planes[1].placement = {{25, 0, 0}, 0.8, {0.5, 0.25, 0}};
+    scene.spheres[0].placement = {{10, 20, 30}, 0.5, {0.1, 0.2, 0.3}};
+    scene.spheres[1].placement = {{0, 0, 45}, 1.0, {0.4, 0, 0}};
     addLight(scene, at + glm::dvec3(3, 8, 2));
     setCamera(scene, at + glm::dvec3(2, 3, 6), at + glm::dvec3(-1, 0.5, 0), {0, 1, 0}, 60.0);
     return scene;

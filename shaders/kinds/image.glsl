@@ -3,12 +3,11 @@
 #ifndef RAYTEX_KIND_IMAGE_GLSL
 #define RAYTEX_KIND_IMAGE_GLSL
 
-// Bilinear (the sampler's filter) at column 1 - u, row 1 - v: v = 1 is the image's top
-// row, and 1 - u undoes the mirror of the notes' (u, v) frames seen from outside
-// (docs/textures.md, "Image orientation"). REPEAT wraps u; on the sphere (clampV) t is
+// Bilinear (the sampler's filter) at tc.image: column and row, row 0 the image's top, oriented
+// by the mapping (docs/textures.md, "Image orientation"). REPEAT wraps s; on the sphere (clampV) t is
 // kept half a texel inside the image so the poles do not blend the top and bottom rows.
 vec3 imagePoint(Material m, TexCoord tc) {
-  vec2 st = vec2(1.0 - tc.uv.x, 1.0 - tc.uv.y);
+  vec2 st = tc.image;
   if (tc.clampV) {
     float h = float(textureSize(images, 0).y);
     st.y = clamp(st.y, 0.5 / h, 1.0 - 0.5 / h);
@@ -35,7 +34,7 @@ const float IMAGE_SPHERE_PROBES = 32.0;
 const float IMAGE_LOD_BIAS = -0.79248125;
 
 vec3 imageBox(Material m, TexCoord tc, Footprint fp) {
-  vec2 st = vec2(1.0 - tc.uv.x, 1.0 - tc.uv.y);
+  vec2 st = tc.image;
   float layer = float(m.imageLayer);
   vec2 size = vec2(textureSize(images, 0).xy);
   float maxLevel = float(textureQueryLevels(images) - 1);
@@ -55,8 +54,8 @@ vec3 imageBox(Material m, TexCoord tc, Footprint fp) {
     step = vec2(1.0 / k, 0.0);
     width2 = band * band * size.y * size.y;
   } else {
-    // Steps of st = (1 - u, 1 - v) for one sample step in x and in y, in level-0 texels.
-    vec2 dstdx = -fp.duvdx, dstdy = -fp.duvdy;
+    // Steps of st for one sample step in x and in y, in level-0 texels.
+    vec2 dstdx = fp.dimagedx, dstdy = fp.dimagedy;
     // Near a sphere's poles du grows without bound, but no footprint covers more than every u.
     if (tc.clampV) {
       dstdx.x = clamp(dstdx.x, -1.0, 1.0);
