@@ -38,9 +38,10 @@
 #endif
 // A case of the dispatch for a kind that returns a blend factor t: colour = mix(color1, color2, t).
 // Guarded cases in a chain, not a GLSL switch: lavapipe ran the switch's box kernel 1.5 % slower
-// (docs/performance.md, "One dispatch per texture kind").
+// (docs/performance.md, "One dispatch per texture kind"). One mix after the chain, not one per
+// case: the kernel built around a scene's values then rounds exactly as the one reading them.
 #define TEXTURE_BLEND_CASE(kind, name) \
-  if (TEXTURE_KIND_PRESENT(kind) && m.textureKind == (kind)) return mix(m.color1.rgb, m.color2.rgb, TEXTURE_EVAL(name));
+  if (TEXTURE_KIND_PRESENT(kind) && m.textureKind == (kind)) t = TEXTURE_EVAL(name);
 
 #ifdef RAYTEX_FILTER_BOX
 vec3 textureColor(Material m, TexCoord tc, Footprint fp) {
@@ -48,6 +49,7 @@ vec3 textureColor(Material m, TexCoord tc, Footprint fp) {
 vec3 textureColor(Material m, TexCoord tc) {
 #endif
   if (TEXTURE_KIND_PRESENT(TEX_IMAGE) && m.textureKind == TEX_IMAGE) return TEXTURE_EVAL(image);
+  float t = -1.0;  // stays < 0 for untextured materials
   TEXTURE_BLEND_CASE(TEX_CHECKER, checker)
   TEXTURE_BLEND_CASE(TEX_SOLID_CHECKER, solidChecker)
   TEXTURE_BLEND_CASE(TEX_NOISE, noise)
@@ -56,7 +58,8 @@ vec3 textureColor(Material m, TexCoord tc) {
   TEXTURE_BLEND_CASE(TEX_TURBULENCE, turbulence)
   TEXTURE_BLEND_CASE(TEX_DTURBULENCE, dturbulence)
   TEXTURE_BLEND_CASE(TEX_BRICKS, bricks)
-  return m.diffuse.rgb;  // TEX_NONE
+  if (t < -0.5) return m.diffuse.rgb;  // TEX_NONE (far from any rounded blend value)
+  return mix(m.color1.rgb, m.color2.rgb, t);
 }
 
 #ifdef RAYTEX_FILTER_BOX
@@ -73,16 +76,12 @@ float filteredBlend(Material m, TexCoord tc, Footprint fp) {
   return 0.0;
 }
 
-// How many cells of a closed-form kind the footprint step (duv, ds) spans. Selects, not
-// branches: each is a few operations, and a branch costs the whole SIMD group on lavapipe.
-#define TEXTURE_CELLS_CASE(kind, name) \
-  if (TEXTURE_KIND_PRESENT(kind)) cells = mix(cells, name##Cells(m, duv, ds), m.textureKind == (kind));
+// How many cells of a closed-form kind the footprint step (duv, ds) spans.
 float filteredCells(Material m, vec2 duv, vec3 ds) {
-  float cells = 0.0;
-  TEXTURE_CELLS_CASE(TEX_CHECKER, checker)
-  TEXTURE_CELLS_CASE(TEX_SOLID_CHECKER, solidChecker)
-  TEXTURE_CELLS_CASE(TEX_BRICKS, bricks)
-  return cells;
+  if (TEXTURE_KIND_PRESENT(TEX_CHECKER) && m.textureKind == TEX_CHECKER) return checkerCells(m, duv, ds);
+  if (TEXTURE_KIND_PRESENT(TEX_SOLID_CHECKER) && m.textureKind == TEX_SOLID_CHECKER) return solidCheckerCells(m, duv, ds);
+  if (TEXTURE_KIND_PRESENT(TEX_BRICKS) && m.textureKind == TEX_BRICKS) return bricksCells(m, duv, ds);
+  return 0.0;
 }
 #endif  // RAYTEX_FILTER_BOX
 
