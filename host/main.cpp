@@ -14,6 +14,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include <unistd.h>
+
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -100,6 +102,10 @@ int runCommand(const CliArgs& cli) {
 // Every command ends here: an escaping exception is one line and exit 1, and so is output
 // that could not be written to stdout.
 int main(int argc, char** argv) {
+  // Output to a file or pipe is held until checkedExit (up to 64 KiB: --help, --json, the device
+  // list), so a failed write is seen there with its errno; a terminal stays line-buffered.
+  static char stdoutBuffer[1 << 16];  // glibc ignores the size of a buffer it allocates itself
+  if (!isatty(fileno(stdout))) setvbuf(stdout, stdoutBuffer, _IOFBF, sizeof stdoutBuffer);
   std::vector<std::string> args(argv + 1, argv + argc);
   CliArgs cli;
   std::string error;
