@@ -129,7 +129,7 @@ bool isBlockKeyword(const std::string& w) {
 
 // Which texture keys apply to which kinds (docs/scene-format.md).
 bool textureKeyApplies(TextureKind kind, const std::string& key) {
-  if (key == "file") return kind == TextureKind::Image;
+  if (key == "file" || key == "wrap") return kind == TextureKind::Image;
   if (kind == TextureKind::Image) return false;
   if (key == "color1" || key == "color2") return true;
   if (key == "squares") return kind == TextureKind::Checker || kind == TextureKind::SolidChecker;
@@ -384,7 +384,7 @@ class Parser {
       block(where, [&](const Token& key) {
         const std::string& k = key.text;
         bool known = k == "color1" || k == "color2" || k == "scale" || k == "strength" || k == "squares" ||
-                     k == "octaves" || k == "file";
+                     k == "octaves" || k == "file" || k == "wrap";
         if (!known) fail(key.loc, "unknown key " + quote(k) + " in " + where);
         if (!textureKeyApplies(kind, k))
           fail(key.loc, "'" + k + "' does not apply to " + textureKindName(kind) + " textures");
@@ -394,7 +394,12 @@ class Parser {
         else if (k == "scale") t.scale = float(positive("scale"));
         else if (k == "squares") t.squares = float(positive("squares"));
         else if (k == "strength") t.strength = float(number());
-        else if (k == "octaves") {
+        else if (k == "wrap") {
+          Token v = take();
+          if (v.kind != Tok::Ident || (v.text != "repeat" && v.text != "clamp"))
+            fail(v.loc, "wrap must be repeat or clamp, got " + describe(v));
+          t.wrap = v.text == "clamp" ? ImageWrap::Clamp : ImageWrap::Repeat;
+        } else if (k == "octaves") {
           FileLoc loc;
           std::string text;
           double v = number(&loc, &text);

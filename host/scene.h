@@ -38,6 +38,10 @@ enum class TextureKind {
   DTurbulence,
 };
 
+// How an image texture continues outside [0, 1]: tiled, or (clamp, a decal) its edge texels
+// extended, as CLAMP_TO_EDGE.
+enum class ImageWrap { Repeat, Clamp };
+
 struct TextureDesc {
   TextureKind kind = TextureKind::None;
   glm::vec3 color1{1.0f};
@@ -47,6 +51,7 @@ struct TextureDesc {
   float squares = 2.0f;   // checks per side of one texture tile (checker, solid_checker)
   int octaves = 1;        // noise octaves (turbulence-based kinds)
   std::string imagePath;  // image: resolved relative to the scene file that names it
+  ImageWrap wrap = ImageWrap::Repeat;  // image
   FileLoc loc;            // where the texture was given, for image load errors
 };
 

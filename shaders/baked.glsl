@@ -70,7 +70,7 @@ BAKED_WORDS_10(43)
 // The items, by the tens their words start at (BAKED_*_WORD / 10 + k * BAKED_*_STRIDE / 10).
 // Sphere: centerRadius, material. Plane: normalDistance, tangentScale, binormal, uvOffset,
 // solidOffset, material. Light: position, color. Material: ambient, diffuse, specular, color1,
-// color2, params, textureKind, octaves, imageLayer.
+// color2, params, textureKind, octaves, imageIndex, imageSize.
 #define BAKED_SPHERE(t) Sphere(BAKED_VEC4(t, 0, 1, 2, 3), bakedWord##t##_4, 0u, 0u, 0u)
 #define BAKED_PLANE(t, u, v)                                                                               \
   Plane(BAKED_VEC4(t, 0, 1, 2, 3), BAKED_VEC4(t, 4, 5, 6, 7),                                              \
@@ -83,7 +83,7 @@ BAKED_WORDS_10(43)
            vec4(uintBitsToFloat(bakedWord##t##_8), uintBitsToFloat(bakedWord##t##_9),                      \
                 uintBitsToFloat(bakedWord##u##_0), uintBitsToFloat(bakedWord##u##_1)),                     \
            BAKED_VEC4(u, 2, 3, 4, 5), BAKED_VEC4(u, 6, 7, 8, 9), BAKED_VEC4(v, 0, 1, 2, 3),               \
-           bakedWord##v##_4, bakedWord##v##_5, bakedWord##v##_6, 0u)
+           bakedWord##v##_4, bakedWord##v##_5, bakedWord##v##_6, bakedWord##v##_7)
 
 // Slot k of each kind (k is a constant once the driver unrolls the caller's loop; slots past
 // MAX_BAKED_* give the last one).

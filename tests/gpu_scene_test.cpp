@@ -18,8 +18,8 @@ TEST(GpuScene, CourseSceneUploadsOnlyTheMaterialsItUses) {
   GpuScene g = buildGpuScene(scene, 64, 48);
   EXPECT_EQ(g.materials.size(), 2u);  // aSolidChecker and aChecker of eight defined
   EXPECT_EQ(g.shape.kinds(), (1u << TEX_SOLID_CHECKER) | (1u << TEX_CHECKER));
-  EXPECT_EQ(g.imageLayers, 0);  // anImage is defined but unused: earth.jpg is not loaded
-  EXPECT_TRUE(g.imagePixels.empty());
+  EXPECT_TRUE(g.imageChains.empty());  // anImage is defined but unused: earth.jpg is not loaded
+  EXPECT_EQ(g.shape.imageCount, 0u);
   ASSERT_EQ(g.spheres.size(), 1u);
   ASSERT_EQ(g.planes.size(), 1u);
   EXPECT_EQ(g.materials[g.spheres[0].material].textureKind, uint32_t(TEX_SOLID_CHECKER));
@@ -142,16 +142,17 @@ TEST(GpuScene, MissingOrBrokenImageIsASceneErrorAtTheFileKey) {
   }
 }
 
-TEST(GpuScene, ImagesShareOneArrayLayerPerFile) {
+TEST(GpuScene, ImagesKeepOneChainPerFileAtItsOwnSize) {
   Scene scene = parseSceneFile(kSourceDir + "/scenes/textures.cfg");
   for (Sphere& s : scene.spheres)
     for (size_t i = 0; i < scene.materials.size(); ++i)
       if (scene.materials[i].name == "anImage") s.material = int(i);
-  GpuScene g = buildGpuScene(scene, 8, 8);
-  EXPECT_EQ(g.imageLayers, 1);
-  EXPECT_EQ(g.imageWidth, 2048);
-  EXPECT_EQ(g.imageHeight, 1024);
-  EXPECT_EQ(g.imagePixels.size(), size_t(2048) * 1024 * 4);
+  GpuScene g = buildGpuScene(scene, 8, 8, PackOptions{false});
+  ASSERT_EQ(g.imageChains.size(), 1u);
+  EXPECT_EQ(g.shape.imageCount, 1u);
+  EXPECT_EQ(g.imageChains[0].width, 2048);
+  EXPECT_EQ(g.imageChains[0].height, 1024);
+  EXPECT_EQ(g.imageChains[0].pixels.size(), size_t(2048) * 1024 * 4);
 }
 
 }  // namespace
@@ -228,6 +229,6 @@ TEST(GpuScene, AllMaterialsPacksUnusedOnesButSpecialisesToTheUsed) {
   EXPECT_EQ(used.materials.size(), 2u);
   EXPECT_EQ(all.materials.size(), scene.materials.size());
   EXPECT_EQ(all.shape, used.shape);
-  EXPECT_EQ(all.imageLayers, 1);  // anImage's earth.jpg, ready for a switch
-  EXPECT_EQ(used.imageLayers, 0);
+  EXPECT_EQ(all.imageChains.size(), 1u);  // anImage's earth.jpg, ready for a switch
+  EXPECT_EQ(used.imageChains.size(), 0u);
 }
