@@ -22,7 +22,8 @@ trap 'rm -rf "$tmp" "$src/scenes/.bench-one-image.cfg"' EXIT
   echo 'camera { eye = (0, 2, 11); lookat = (0, 0, 0); up = (0, 1, 0); fov = 40; }'
   echo 'light { position = (-6, 10, 6); color = (1, 1, 1); }'
   n=0
-  for file in "$src/textures/earth.jpg" "$src/textures/uv_grid.png" "$tmp/render-1024x512.png" "$tmp/render-768x768.png"; do
+  for file in "$src/textures/earth.jpg" "$src/textures/uv_grid.png" "$tmp/render-1024x512.png" \
+    "$tmp/render-768x768.png"; do
     echo "material m$n { texture = image { file = \"$file\"; }; }"
     echo "sphere { center = ($((n * 3 - 4)).5, 0, 0); radius = 1.4; m$n; }"
     n=$((n + 1))
@@ -46,6 +47,7 @@ for scene in "$src/scenes/.bench-no-image.cfg" "$src/scenes/.bench-one-image.cfg
       frame "$2" "$scene" "$filter" >>"$tmp/b"
     done
     name=$(basename "$scene" .cfg)
-    echo "${name#.bench-} $filter ${width}x$height: A $(median <"$tmp/a") ms ($(tr '\n' ' ' <"$tmp/a")), B $(median <"$tmp/b") ms ($(tr '\n' ' ' <"$tmp/b"))"
+    echo "${name#.bench-} $filter ${width}x$height: A $(median <"$tmp/a") ms ($(tr '\n' ' ' <"$tmp/a")),"\
+      "B $(median <"$tmp/b") ms ($(tr '\n' ' ' <"$tmp/b"))"
   done
 done

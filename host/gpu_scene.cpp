@@ -154,7 +154,8 @@ gpu::Plane packPlane(const Plane& p, const TextureDesc& texture, glm::dvec3 eye,
   gp.binormal = glm::vec4(glm::vec3(pf.binormal), 0.0f);
   glm::dvec2 st(glm::dot(eye, pf.tangent) / s, glm::dot(eye, pf.binormal) / s);
   glm::dvec2 cell = glm::floor(st);
-  glm::dvec2 tile = imageClamped(texture) ? exactTile(cell) : glm::dvec2(reduceModulo(cell.x, 4096.0), reduceModulo(cell.y, 4096.0));
+  glm::dvec2 tile = imageClamped(texture) ? exactTile(cell)
+                                          : glm::dvec2(reduceModulo(cell.x, 4096.0), reduceModulo(cell.y, 4096.0));
   gp.uvOffset = glm::vec4(float(st.x - cell.x), float(st.y - cell.y), float(tile.x), float(tile.y));
   glm::dvec3 solid = eye / s;
   double period = solidPeriod(texture);
@@ -191,7 +192,8 @@ void addOtherMaterials(const Scene& scene, std::vector<int>& packed) {
   std::vector<std::string> images;
   auto imageFits = [&](int m) {
     const TextureDesc& t = scene.materials[size_t(m)].texture;
-    if (t.kind != TextureKind::Image || std::find(images.begin(), images.end(), t.imagePath) != images.end()) return true;
+    if (t.kind != TextureKind::Image || std::find(images.begin(), images.end(), t.imagePath) != images.end())
+      return true;
     if (images.size() == MAX_IMAGES) return false;
     images.push_back(t.imagePath);
     return true;

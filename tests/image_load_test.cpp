@@ -273,7 +273,8 @@ TEST(SceneImages, MoreImagesThanTheKernelBindsIsASceneError) {
   std::string text;
   for (int i = 0; i <= MAX_IMAGES; ++i) {
     std::string name = "i" + std::to_string(i) + ".png";
-    if (i < MAX_IMAGES) std::ofstream(dir / name, std::ios::binary).write(reinterpret_cast<const char*>(png.data()), long(png.size()));
+    if (i < MAX_IMAGES)
+      std::ofstream(dir / name, std::ios::binary).write(reinterpret_cast<const char*>(png.data()), long(png.size()));
     text += "material m" + std::to_string(i) + " { texture = image { file = \"" + name + "\"; }; }\n";
   }
   std::string sixteen = text + "material again { texture = image { file = \"i0.png\"; }; }\n";
