@@ -219,6 +219,34 @@ TEST(GpuScene, MoreIntersectionTestsPerSampleThanTheKernelLoopsOverIsASceneError
   }
 }
 
+// Every material for the viewer, but no image file past the first MAX_IMAGES: a material whose
+// image would be the 17th is left out (packed when an object takes it), not refused.
+TEST(GpuScene, AllMaterialsLeavesOutImagesPastTheLimit) {
+  std::string text = "material earth { texture = image { file = \"../../../textures/earth.jpg\"; } }\n";
+  for (int i = 1; i <= MAX_IMAGES; ++i) {
+    char name[16];
+    snprintf(name, sizeof(name), "%02d", i);
+    text += std::string("material m") + name + " { texture = image { file = \"count/" + name + ".png\"; } }\n";
+  }
+  text += "sphere { radius = 1; m16; }\n";
+  Scene scene = parseSceneText(text, std::string(RAYTEX_SOURCE_DIR) + "/tests/malformed/images/all.cfg");
+  PackOptions pack;
+  pack.mipmaps = false;
+  pack.allMaterials = true;
+  GpuScene g = buildGpuScene(scene, 8, 8, pack);
+  ASSERT_EQ(g.images.size(), size_t(MAX_IMAGES));
+  EXPECT_NE(g.images[0].path.find("count/16.png"), std::string::npos);  // the object's first
+  EXPECT_EQ(g.materials.size(), size_t(MAX_IMAGES));
+  // In order of definition: earth.jpg, count/01 .. count/14 fit; count/15.png would be the 17th.
+  EXPECT_EQ(g.materialIndex.count(0), 1u);
+  EXPECT_EQ(g.materialIndex.count(15), 0u);
+  EXPECT_EQ(g.shape.imageCount, 1u);
+  scene.spheres[0].material = 15;  // an object takes it: packed first
+  g = buildGpuScene(scene, 8, 8, pack);
+  EXPECT_EQ(g.materialIndex.at(15), 0u);
+  EXPECT_NE(g.images[0].path.find("count/15.png"), std::string::npos);
+}
+
 TEST(GpuScene, AllMaterialsPacksUnusedOnesButSpecialisesToTheUsed) {
   Scene scene = parseSceneFile(std::string(RAYTEX_SOURCE_DIR) + "/scenes/textures.cfg");
   PackOptions pack;
