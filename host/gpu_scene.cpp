@@ -23,13 +23,24 @@ const Material& materialAt(const Scene& scene, int index, const Material& fallba
   return index < 0 ? fallback : scene.materials[size_t(index)];
 }
 
-gpu::Material packMaterial(const Material& m, uint32_t imageLayer) {
+// An image texture's Material.imageIndex and imageSize (common.h): its element of
+// BINDING_IMAGES, mip levels, wrap and size.
+void packImageFields(gpu::Material& g, const TextureDesc& t, const std::vector<SceneImage>& images, bool mipmaps) {
+  uint32_t slot = 0;
+  while (images[slot].path != t.imagePath) ++slot;
+  const ImageHeader& h = images[slot].header;
+  const uint32_t levels = mipmaps ? uint32_t(mipLevelCount(h.width, h.height)) : 1u;
+  g.imageIndex = slot | levels << 8 | (t.wrap == ImageWrap::Clamp ? IMAGE_WRAP_CLAMP : 0u);
+  g.imageSize = uint32_t(h.width) | uint32_t(h.height) << 16;
+}
+
+gpu::Material packMaterial(const Material& m, const std::vector<SceneImage>& images, bool mipmaps) {
   gpu::Material g{};
   g.ambient = v4(m.ambient);
   g.diffuse = v4(m.diffuse);
   g.specular = v4(m.specular, m.shininess);
   packTexture(m.texture, &g);
-  g.imageLayer = imageLayer;
+  if (m.texture.kind == TextureKind::Image) packImageFields(g, m.texture, images, mipmaps);
   return g;
 }
 }  // namespace
@@ -38,10 +49,23 @@ SceneShape sceneShape(const Scene& scene) {
   Material fallback = defaultMaterial();
   auto kindBit = [&](int m) { return 1u << uint32_t(materialAt(scene, m, fallback).texture.kind); };
   auto count = [](size_t n) { return n <= MAX_SPECIALISED_COUNT ? uint32_t(n) : COUNT_FROM_FRAME; };
+  std::vector<std::string> images;  // distinct image files, as probeSceneImages counts them
+  auto noteImage = [&](int m) {
+    const TextureDesc& t = materialAt(scene, m, fallback).texture;
+    if (t.kind == TextureKind::Image && std::find(images.begin(), images.end(), t.imagePath) == images.end())
+      images.push_back(t.imagePath);
+  };
   SceneShape shape;
   shape.sphereKinds = shape.planeKinds = 0;
-  for (const Sphere& s : scene.spheres) shape.sphereKinds |= kindBit(s.material);
-  for (const Plane& p : scene.planes) shape.planeKinds |= kindBit(p.material);
+  for (const Sphere& s : scene.spheres) {
+    shape.sphereKinds |= kindBit(s.material);
+    noteImage(s.material);
+  }
+  for (const Plane& p : scene.planes) {
+    shape.planeKinds |= kindBit(p.material);
+    noteImage(p.material);
+  }
+  shape.imageCount = uint32_t(std::min<size_t>(images.size(), MAX_IMAGES));
   shape.sphereCount = count(scene.spheres.size());
   shape.planeCount = count(scene.planes.size());
   shape.lightCount = count(scene.lights.size());
@@ -85,6 +109,9 @@ double solidPeriod(const TextureDesc& t) {
 
 // x clamped to +-TEXCOORD_LIMIT, as the kernel clamps its coordinates.
 double clampTexCoord(double x) { return std::clamp(x, -TEXCOORD_LIMIT, TEXCOORD_LIMIT); }
+
+// An image texture with wrap = clamp: the kernel needs the tile index itself, not its parity.
+bool imageClamped(const TextureDesc& t) { return t.kind == TextureKind::Image && t.wrap == ImageWrap::Clamp; }
 
 // tex_scale as the kernel divides by it: a normal float (a subnormal may be flushed to 0).
 double kernelScale(double scale) { return std::clamp(scale, double(FLT_MIN), double(FLT_MAX)); }
@@ -164,8 +191,13 @@ gpu::Plane packPlane(const Plane& p, const TextureDesc& texture, glm::dvec3 eye,
                        offsetUv.y * glm::dot(turned.binormal, right),
                    glm::dot(eye, imageY) / s - offsetUv.x * glm::dot(turned.tangent, up) -
                        offsetUv.y * glm::dot(turned.binormal, up));
-  gp.imageRight = glm::vec4(glm::vec3(imageX), float(reduceModulo(image.x, 1.0)));
-  gp.imageDown = glm::vec4(glm::vec3(imageY), float(reduceModulo(image.y, 1.0)));
+  // Repeating images need the offset's fraction alone; a clamped one (a decal) the whole offset,
+  // so that the lookup lies in [0, 1] on the decal alone. (Its float rounding grows with the
+  // camera's distance in decals, as the decal's size on screen shrinks: a fixed fraction of a
+  // pixel.)
+  if (!imageClamped(texture)) image = glm::dvec2(reduceModulo(image.x, 1.0), reduceModulo(image.y, 1.0));
+  gp.imageRight = glm::vec4(glm::vec3(imageX), float(clampTexCoord(image.x)));
+  gp.imageDown = glm::vec4(glm::vec3(imageY), float(clampTexCoord(image.y)));
   // solid = (R^-1 (x - o) + o) / s + offset, x = camera-relative + eye: the eye's part here.
   const glm::dvec3 origin = pf.distance * pf.normal;
   gp.solidOffset = glm::vec4(glm::vec3(reduceSolid((inverse * eye + (origin - inverse * origin)) / s + place.offset, texture)), 0.0f);
@@ -174,48 +206,41 @@ gpu::Plane packPlane(const Plane& p, const TextureDesc& texture, glm::dvec3 eye,
   return gp;
 }
 
-// One sampler2DArray holds every image (lavapipe cannot index sampler arrays dynamically), so
-// all layers share the largest width and height. Each image is decoded straight into its
-// layer when it has that size (else into a buffer of its own, resampled into the layer), and
-// its mip levels are written row by row straight to their place among imageMipPixels.
-void fillImageLayers(GpuScene& g, bool mipmaps) {
+// Each image at its own size, decoded straight into its chain, its mip levels written after
+// level 0 row by row (writeMipLevels).
+void fillImageChains(GpuScene& g, bool mipmaps) {
   for (const SceneImage& image : g.images) {
-    g.imageWidth = std::max(g.imageWidth, image.header.width);
-    g.imageHeight = std::max(g.imageHeight, image.header.height);
-  }
-  g.imageLayers = int(g.images.size());
-  g.imageLevels = mipmaps ? mipLevelCount(g.imageWidth, g.imageHeight) : 1;
-  const size_t layerBytes = size_t(g.imageWidth) * g.imageHeight * 4;
-  g.imagePixels.resize(layerBytes * g.images.size());
-  for (size_t i = 0; i < g.images.size(); ++i) {
-    const SceneImage& image = g.images[i];
-    uint8_t* layer = g.imagePixels.data() + i * layerBytes;
-    if (image.header.width == g.imageWidth && image.header.height == g.imageHeight) {
-      decodeSceneImage(image, layer);
-    } else {
-      ImageRGBA8 own{image.header.width, image.header.height, {}};
-      own.pixels.resize(size_t(own.width) * own.height * 4);
-      decodeSceneImage(image, own.pixels.data());
-      resizeImage(own, g.imageWidth, g.imageHeight, layer);
+    ImageChain chain{image.header.width, image.header.height, 1, {}};
+    chain.levels = mipmaps ? mipLevelCount(chain.width, chain.height) : 1;
+    chain.pixels.resize(size_t(imageChainBytes(image.header, mipmaps)));
+    decodeSceneImage(image, chain.pixels.data());
+    std::vector<uint8_t*> levels;
+    uint8_t* next = chain.pixels.data() + size_t(chain.width) * chain.height * 4;
+    for (int level = 1; level < chain.levels; ++level) {
+      levels.push_back(next);
+      next += size_t(std::max(1, chain.width >> level)) * size_t(std::max(1, chain.height >> level)) * 4;
     }
+    if (chain.levels > 1) writeMipLevels(chain.pixels.data(), chain.width, chain.height, levels.data());
+    g.imageChains.push_back(std::move(chain));
   }
-  if (g.imageLevels == 1) return;
-  // Level after level, each level layer after layer.
-  std::vector<size_t> levelOffset(size_t(g.imageLevels), 0), levelLayerBytes(size_t(g.imageLevels), 0);
-  size_t total = 0;
-  for (int level = 1; level < g.imageLevels; ++level) {
-    levelOffset[size_t(level)] = total;
-    levelLayerBytes[size_t(level)] =
-        size_t(std::max(1, g.imageWidth >> level)) * size_t(std::max(1, g.imageHeight >> level)) * 4;
-    total += levelLayerBytes[size_t(level)] * g.images.size();
-  }
-  g.imageMipPixels.resize(total);
-  for (size_t i = 0; i < g.images.size(); ++i) {
-    std::vector<uint8_t*> out;
-    for (int level = 1; level < g.imageLevels; ++level)
-      out.push_back(g.imageMipPixels.data() + levelOffset[size_t(level)] + i * levelLayerBytes[size_t(level)]);
-    writeMipLevels(g.imagePixels.data() + i * layerBytes, g.imageWidth, g.imageHeight, out.data());
-  }
+}
+
+// The scene's other materials after the objects' ones in `packed`, up to MAX_MATERIALS, less
+// those whose image file would be past the first MAX_IMAGES (packed when an object takes them).
+void addOtherMaterials(const Scene& scene, std::vector<int>& packed) {
+  std::vector<std::string> images;
+  auto imageFits = [&](int m) {
+    const TextureDesc& t = scene.materials[size_t(m)].texture;
+    if (t.kind != TextureKind::Image || std::find(images.begin(), images.end(), t.imagePath) != images.end())
+      return true;
+    if (images.size() == MAX_IMAGES) return false;
+    images.push_back(t.imagePath);
+    return true;
+  };
+  for (int m : packed)
+    if (m >= 0) imageFits(m);
+  for (int m = 0; m < int(scene.materials.size()) && packed.size() < MAX_MATERIALS; ++m)
+    if (std::find(packed.begin(), packed.end(), m) == packed.end() && imageFits(m)) packed.push_back(m);
 }
 
 }  // namespace
@@ -248,17 +273,13 @@ GpuScene buildGpuScene(const Scene& scene, uint32_t width, uint32_t height, cons
   std::map<int, uint32_t> materialIndex;
   checkSceneLimits(scene);  // also checked when parsed; scenes built in code come here directly
   std::vector<int> packed = usedMaterials(scene);
-  for (int m = 0; options.allMaterials && m < int(scene.materials.size()) && packed.size() < MAX_MATERIALS; ++m)
-    if (std::find(packed.begin(), packed.end(), m) == packed.end()) packed.push_back(m);
+  if (options.allMaterials) addOtherMaterials(scene, packed);
   g.images = probeSceneImages(scene, packed, options.mipmaps, options.maxImageMiB);
   bool needsNoise = false;
   for (int m : packed) {
     const Material& material = materialAt(scene, m, fallback);
-    uint32_t layer = 0;
-    if (material.texture.kind == TextureKind::Image)
-      while (g.images[layer].path != material.texture.imagePath) ++layer;
     materialIndex[m] = uint32_t(g.materials.size());
-    g.materials.push_back(packMaterial(material, layer));
+    g.materials.push_back(packMaterial(material, g.images, options.mipmaps));
     if (material.texture.kind != TextureKind::None) needsNoise |= textureKindInfo(material.texture.kind).needsNoise;
   }
   g.shape = sceneShape(scene);
@@ -268,7 +289,7 @@ GpuScene buildGpuScene(const Scene& scene, uint32_t width, uint32_t height, cons
 
   if (needsNoise) fillNoiseTable(&g.noise);
 
-  if (!g.images.empty()) fillImageLayers(g, options.mipmaps);
+  fillImageChains(g, options.mipmaps);
   return g;
 }
 

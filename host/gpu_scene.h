@@ -21,10 +21,12 @@ struct SceneShape {
   uint32_t planeCount = COUNT_FROM_FRAME;
   uint32_t lightCount = COUNT_FROM_FRAME;
   uint32_t placed = 1;  // SPEC_TEXTURE_PLACEMENT (a VkBool32): an object's placement needs the kernel's
+  uint32_t imageCount = MAX_IMAGES;  // image files the objects use (SPEC_IMAGE_COUNT)
   uint32_t kinds() const { return sphereKinds | planeKinds; }
   bool operator==(const SceneShape& o) const {
     return sphereKinds == o.sphereKinds && planeKinds == o.planeKinds && sphereCount == o.sphereCount &&
-           planeCount == o.planeCount && lightCount == o.lightCount && placed == o.placed;
+           planeCount == o.planeCount && lightCount == o.lightCount && placed == o.placed &&
+           imageCount == o.imageCount;
   }
 };
 
@@ -39,6 +41,14 @@ struct BakedScene {
   }
 };
 
+// One image file's texels as uploaded: RGBA8 sRGB, level 0 (width x height) first, then its
+// levels 1.. of the full mip chain when it has them (mipChain in image_io.h: level l is
+// max(1, width >> l) x max(1, height >> l)), level after level.
+struct ImageChain {
+  int width = 1, height = 1, levels = 1;
+  std::vector<uint8_t> pixels;
+};
+
 struct GpuScene {
   gpu::Frame frame{};
   std::vector<gpu::Sphere> spheres;
@@ -48,16 +58,10 @@ struct GpuScene {
   gpu::NoiseTable noise{};
   SceneShape shape;  // the kinds in use and the counts: what the kernel is specialised to
   std::map<int, uint32_t> materialIndex;  // Scene material (-1: the default) -> index in materials
-  // Image textures in use, all resampled to one size: layer i is material imageLayer i, from
-  // file images[i].
+  // Image files in use, each at its own size: element i of BINDING_IMAGES is file images[i],
+  // its texels imageChains[i].
   std::vector<SceneImage> images;
-  int imageWidth = 1, imageHeight = 1, imageLayers = 0;
-  std::vector<uint8_t> imagePixels;  // RGBA8 sRGB, layer after layer
-  // Full mip chains (mipChain in image_io.h) for the filtered kernel: imageLevels levels,
-  // level l being max(1, w >> l) x max(1, h >> l); imageMipPixels holds levels 1.. (level 0 is
-  // imagePixels), level after level, each level layer after layer.
-  int imageLevels = 1;
-  std::vector<uint8_t> imageMipPixels;
+  std::vector<ImageChain> imageChains;
 };
 
 // How buildGpuScene packs a scene.
@@ -72,9 +76,9 @@ struct PackOptions {
 };
 
 // Throws SceneError (with the texture's file location) if an image cannot be loaded, or if the
-// images' headers show that they would upload more than options.maxImageMiB: checked before any
-// image is decoded, and each is decoded straight into imagePixels when it has the array's
-// size. width, height: output size in pixels.
+// images' headers show that they are more than MAX_IMAGES or would upload more than
+// options.maxImageMiB: checked before any image is decoded, each then decoded straight into its
+// chain. width, height: output size in pixels.
 GpuScene buildGpuScene(const Scene& scene, uint32_t width, uint32_t height, const PackOptions& options = {});
 
 // Re-packs what depends on the camera and the output size (the frame, and spheres, planes
@@ -87,7 +91,8 @@ void packCamera(GpuScene& gpuScene, const Scene& scene, uint32_t width, uint32_t
 gpu::Frame cameraFrame(const Camera& camera, uint32_t width, uint32_t height);
 
 // The scene's kinds per shape (kinds(): all in use) and its counts (those over
-// MAX_SPECIALISED_COUNT: COUNT_FROM_FRAME).
+// MAX_SPECIALISED_COUNT: COUNT_FROM_FRAME); the image files its objects use (at most
+// MAX_IMAGES: buildGpuScene refuses more).
 SceneShape sceneShape(const Scene& scene);
 
 // The scene's values for a kernel built around them; not enabled if it has more than

@@ -56,6 +56,7 @@ int renderHeadless(const RenderOptions& options, uint32_t extraFrames, HeadlessR
     pack.mipmaps = out->job.filterBox;
     pack.maxImageMiB = options.maxImageMiB;
     gpuScene = buildGpuScene(scene, out->job.width, out->job.height, pack);
+    out->imageBytes = imageUploadBytes(gpuScene.images, pack.mipmaps);
   } catch (const SceneError& e) {
     fprintf(stderr, "%s\n", e.what());
     return 2;

@@ -30,6 +30,7 @@ struct HeadlessRender {
   std::vector<double> frameMs;  // GPU time (timestamps) of the frames after the first
   std::string deviceName;
   size_t nonFinite = 0;  // colour values written as black
+  uint64_t imageBytes = 0;  // GPU memory of the image textures: the sum of their chains
 };
 
 // Encodes `image` as PNG and writes it to `output` (writeFileAtomic), or only encodes it

@@ -50,9 +50,10 @@ int runRender(const RenderOptions& options) {
     const PhaseTimes& t = render.times;
     if (rc == 0 && options.stats)
       printf("device %.1f ms | parse %.1f ms | upload %.1f ms | pipeline %.1f ms | render %.1f ms | "
-             "readback %.1f ms | encode %.1f ms | %ux%u, %u spp\n",
-             t.device, t.parse, t.upload, t.pipeline, t.firstDispatch, t.readback, t.encode, render.job.width,
-             render.job.height, render.job.samplesPerPixel);
+             "readback %.1f ms | encode %.1f ms | images %.1f MiB | %ux%u, %u spp\n",
+             t.device, t.parse, t.upload, t.pipeline, t.firstDispatch, t.readback, t.encode,
+             double(render.imageBytes) / (1024.0 * 1024.0), render.job.width, render.job.height,
+             render.job.samplesPerPixel);
     return rc;
   }
   Clock::time_point t = Clock::now();

@@ -46,7 +46,9 @@ TexCoordD planeTexCoord(const PlaneFrame& frame, double texScale, glm::dvec3 p) 
   // The image lookup of the placed mapping (here unplaced).
   TexturePlacement placement;
   placement.scale = texScale;
-  tc.image = planeTexCoord(frame, placement, p).image;
+  const TexCoordD placed = planeTexCoord(frame, placement, p);
+  tc.image = placed.image;
+  tc.imageTile = placed.imageTile;
   return tc;
 }
 
@@ -58,6 +60,7 @@ TexCoordD sphereTexCoord(glm::dvec3 n) {
   tc.tile = glm::dvec2(0.0);
   tc.solid = (n + 1.0) * 0.5;  // (9)
   tc.image = glm::dvec2(1.0 - tc.uv.x, 1.0 - tc.uv.y);
+  tc.imageTile = -tc.tile;  // 1 - (tile + uv)
   tc.clampV = true;
   return tc;
 }
@@ -98,7 +101,8 @@ TexCoordD planeTexCoord(const PlaneFrame& frame, const TexturePlacement& placeme
   const glm::dvec3 right = glm::cross(up, turned.normal);
   const glm::dvec3 w = unwrapped.x * turned.tangent + unwrapped.y * turned.binormal;
   const glm::dvec2 image(glm::dot(w, right), -glm::dot(w, up));
-  tc.image = image - glm::floor(image);
+  tc.imageTile = glm::floor(image);
+  tc.image = image - tc.imageTile;
   return tc;
 }
 
@@ -115,5 +119,6 @@ TexCoordD sphereTexCoord(const TexturePlacement& placement, glm::dvec3 n) {
   tc.uv = unwrapped - tc.tile;
   tc.solid = plain.solid / s + placement.offset;
   tc.image = glm::dvec2(1.0 - tc.uv.x, 1.0 - tc.uv.y);
+  tc.imageTile = -tc.tile;  // 1 - (tile + uv)
   return tc;
 }

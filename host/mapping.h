@@ -39,6 +39,7 @@ struct TexCoordD {
   // Where an image is looked up (docs/textures.md, "Image orientation"): column and row as
   // fractions in [0, 1], column 0 at the image's left edge, row 0 at its top.
   glm::dvec2 image{0.0};
+  glm::dvec2 imageTile{0.0};  // the floors of the unwrapped lookup (imageTile + image)
   bool clampV = false;  // image rows clamp at the sphere's poles instead of repeating
 };
 

@@ -431,6 +431,12 @@ class Parser {
       t->*k.colour = color();
       return;
     }
+    if (k.type == KeyType::Word) {
+      Token v = take();
+      for (size_t i = 0; v.kind == Tok::Ident && i < k.words.size(); ++i)
+        if (v.text == k.words[i]) return k.setWord(*t, i);
+      fail(v.loc, std::string(k.name) + " must be " + describeWords(k) + ", got " + describe(v));
+    }
     if (k.type == KeyType::File) {
       Token f = expect(Tok::String, "a file name in quotes");
       if (f.text.empty()) fail(f.loc, "empty file name");

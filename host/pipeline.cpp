@@ -10,11 +10,11 @@
 #include <vector>
 
 VkDescriptorSetLayout createTraceSetLayout(const Device& device) {
-  auto binding = [](uint32_t index, VkDescriptorType type) {
+  auto binding = [](uint32_t index, VkDescriptorType type, uint32_t count = 1) {
     VkDescriptorSetLayoutBinding b{};
     b.binding = index;
     b.descriptorType = type;
-    b.descriptorCount = 1;
+    b.descriptorCount = count;
     b.stageFlags = VK_SHADER_STAGE_COMPUTE_BIT;
     return b;
   };
@@ -26,7 +26,7 @@ VkDescriptorSetLayout createTraceSetLayout(const Device& device) {
       binding(BINDING_MATERIALS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER),
       binding(BINDING_LIGHTS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER),
       binding(BINDING_NOISE, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER),
-      binding(BINDING_IMAGES, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER),
+      binding(BINDING_IMAGES, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, MAX_IMAGES),
       binding(BINDING_ACCUMULATION, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER),
       binding(BINDING_DISPLAY, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
   };
@@ -80,6 +80,7 @@ VkPipeline createTracePipeline(const Device& device, VkPipelineLayout layout, co
       {SPEC_PLANE_COUNT, offsetof(PipelineKey, shape.planeCount), sizeof(uint32_t)},
       {SPEC_LIGHT_COUNT, offsetof(PipelineKey, shape.lightCount), sizeof(uint32_t)},
       {SPEC_TEXTURE_PLACEMENT, offsetof(PipelineKey, shape.placed), sizeof(VkBool32)},
+      {SPEC_IMAGE_COUNT, offsetof(PipelineKey, shape.imageCount), sizeof(uint32_t)},
       {SPEC_OUTPUT_MODE, offsetof(PipelineKey, outputMode), sizeof(uint32_t)},
       {SPEC_SAMPLES_PER_SIDE, offsetof(PipelineKey, samplesPerSide), sizeof(uint32_t)},
       {SPEC_PROGRESSIVE, offsetof(PipelineKey, progressive), sizeof(VkBool32)},

@@ -28,7 +28,7 @@ glm::dvec3 albedoAt(const Context& c, const Material& m, const ReferenceHit& hit
     case TextureKind::None:
       return glm::dvec3(m.diffuse);
     case TextureKind::Image:
-      return sampleImageReference(c.images.at(m.texture.imagePath), hit.tc.image, hit.tc.clampV);
+      return sampleImageReference(c.images.at(m.texture.imagePath), hit.tc, m.texture.wrap);
     default:
       return textureColorReference(m.texture, hit.tc);
   }
@@ -81,16 +81,21 @@ std::map<std::string, ImageRGBA8> loadReferenceImages(const Scene& scene, uint32
   return images;
 }
 
-glm::dvec3 sampleImageReference(const ImageRGBA8& image, glm::dvec2 st, bool clampV) {
+glm::dvec3 sampleImageReference(const ImageRGBA8& image, const TexCoordD& tc, ImageWrap wrap) {
   const int w = image.width, h = image.height;
-  double x = st.x * w - 0.5;
+  const bool clampU = wrap == ImageWrap::Clamp;
+  const bool clampV = tc.clampV || clampU;
+  const glm::dvec2 st = clampU ? glm::clamp(tc.imageTile + tc.image, 0.0, 1.0) : tc.image;
+  double x = st.x * w;
   double y = st.y * h;
+  if (clampU) x = std::clamp(x, 0.5, w - 0.5);
   if (clampV) y = std::clamp(y, 0.5, h - 0.5);
+  x -= 0.5;
   y -= 0.5;
   double x0 = std::floor(x), y0 = std::floor(y);
   double fx = x - x0, fy = y - y0;
   auto texel = [&](double xi, double yi) {
-    int ix = int(xi - w * std::floor(xi / w));  // repeat
+    int ix = clampU ? int(std::clamp(xi, 0.0, double(w - 1))) : int(xi - w * std::floor(xi / w));
     int iy = clampV ? int(std::clamp(yi, 0.0, double(h - 1))) : int(yi - h * std::floor(yi / h));
     const uint8_t* p = &image.pixels[(size_t(iy) * w + ix) * 4];
     return glm::dvec3(srgbToLinear(p[0] / 255.0), srgbToLinear(p[1] / 255.0), srgbToLinear(p[2] / 255.0));

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "image_io.h"
+#include "mapping.h"
 #include "scene.h"
 #include "scene_images.h"
 
@@ -24,15 +25,18 @@ struct ReferenceImage {
 
 // Decoded image textures of the materials objects use, by resolved path. Throws SceneError
 // at the texture's `file` location when one cannot be loaded, or, before decoding any, when
-// their headers show more than maxImageMiB for the GPU's texture array (as a point-filtered
-// GPU render counts it: probeSceneImages), so that both renderers accept the same scenes.
+// they are more than MAX_IMAGES files or their headers show more than maxImageMiB for the
+// GPU's textures (as a point-filtered GPU render counts it: probeSceneImages), so that both
+// renderers accept the same scenes.
 std::map<std::string, ImageRGBA8> loadReferenceImages(const Scene& scene,
                                                       uint32_t maxImageMiB = kDefaultMaxImageMiB);
 
-// Bilinear sample in linear light at st = (column, row) as fractions of the image, row 0 at
-// the top (TexCoordD::image, docs/textures.md), s repeating; t repeating too, or clamped to
-// the texel centres when clampV (spheres).
-glm::dvec3 sampleImageReference(const ImageRGBA8& image, glm::dvec2 st, bool clampV);
+// Bilinear sample in linear light at tc.image = (column, row) as fractions of the image, row 0
+// at the top (docs/textures.md, "Image orientation"), columns repeating; rows repeating too, or
+// clamped to the texel centres where tc.clampV (spheres). wrap = clamp: at the unwrapped lookup
+// imageTile + image clamped to [0, 1], both axes clamped to the texel centres (CLAMP_TO_EDGE:
+// the image once, its edge texels beyond).
+glm::dvec3 sampleImageReference(const ImageRGBA8& image, const TexCoordD& tc, ImageWrap wrap = ImageWrap::Repeat);
 
 // Renders with samplesPerSide^2 samples per pixel on `threads` threads (0: all cores).
 // maxImageMiB: as loadReferenceImages.

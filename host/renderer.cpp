@@ -13,7 +13,10 @@ namespace {
 
 void writeDescriptors(Renderer& r) {
   VkDescriptorImageInfo displayInfo{VK_NULL_HANDLE, r.display.view, VK_IMAGE_LAYOUT_GENERAL};
-  VkDescriptorImageInfo imagesInfo{r.sampler, r.images.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+  VkDescriptorImageInfo imagesInfo[MAX_IMAGES];
+  for (size_t i = 0; i < MAX_IMAGES; ++i)
+    imagesInfo[i] = {r.sampler, (i < r.images.size() ? r.images[i] : r.placeholder).view,
+                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
   auto bufferInfo = [](const Buffer& b) { return VkDescriptorBufferInfo{b.buffer, 0, VK_WHOLE_SIZE}; };
   const VkDescriptorBufferInfo buffers[] = {bufferInfo(r.frame),     bufferInfo(r.spheres),
                                             bufferInfo(r.planes),    bufferInfo(r.materials),
@@ -34,7 +37,9 @@ void writeDescriptors(Renderer& r) {
   };
   writes.reserve(std::size(buffers) + 2);  // pointers into it stay valid
   write(BINDING_DISPLAY, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE)->pImageInfo = &displayInfo;
-  write(BINDING_IMAGES, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER)->pImageInfo = &imagesInfo;
+  VkWriteDescriptorSet* images = write(BINDING_IMAGES, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER);
+  images->descriptorCount = MAX_IMAGES;
+  images->pImageInfo = imagesInfo;
   for (size_t i = 0; i < std::size(buffers); ++i) {
     bool uniform = bufferBindings[i] != BINDING_ACCUMULATION && bufferBindings[i] != BINDING_OUTPUT;
     write(bufferBindings[i], uniform ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER
@@ -114,6 +119,20 @@ void createOutput(Renderer& r, uint32_t width, uint32_t height) {
   r.height = height;
 }
 
+void destroyImages(Renderer& r) {
+  for (Image& image : r.images) destroyImage(r.device, image);
+  r.images.clear();
+}
+
+// The 1 x 1 image in the elements of BINDING_IMAGES past the scene's images (magenta: a
+// kernel that reads one shows it).
+void createPlaceholderImage(Renderer& r) {
+  static const uint8_t magenta[4] = {255, 0, 255, 255};
+  r.placeholder = createImage(r.device, 1, 1, 1, VK_FORMAT_R8G8B8A8_SRGB,
+                              VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT, false);
+  uploadImageLayers(r.device, r.placeholder, magenta, sizeof(magenta));
+}
+
 }  // namespace
 
 void createRenderer(Renderer& r, const DeviceOptions& options) {
@@ -129,6 +148,7 @@ void createRenderer(Renderer& r, const DeviceOptions& options) {
                       std::to_string(largestBlock));
   }
   r.setLayout = createTraceSetLayout(r.device);
+  createPlaceholderImage(r);
 
   VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
   layoutInfo.setLayoutCount = 1;
@@ -138,7 +158,7 @@ void createRenderer(Renderer& r, const DeviceOptions& options) {
   const VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1},
                                         {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 6},
                                         {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 2},
-                                        {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1}};
+                                        {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, MAX_IMAGES}};
   VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
   poolInfo.maxSets = 1;
   poolInfo.poolSizeCount = uint32_t(std::size(sizes));
@@ -150,10 +170,11 @@ void createRenderer(Renderer& r, const DeviceOptions& options) {
   setInfo.pSetLayouts = &r.setLayout;
   VK_CHECK(vkAllocateDescriptorSets(r.device.device, &setInfo, &r.descriptorSet));
 
-  // Bilinear, repeating: u wraps around the sphere and tiles repeat on planes. Trilinear between
+  // Bilinear, repeating: u wraps around the sphere and tiles repeat on planes (the kernel
+  // clamps the coordinate of wrap = clamp images itself, kinds/image.glsl). Trilinear between
   // mip levels: the point kernel reads level 0 only (textureLod 0), the filtered kernel picks a
-  // level from the sample's footprint (textures.glsl, imageTextureColor). No maxLod limit: the
-  // view's level count is the limit.
+  // level from the sample's footprint (kinds/image.glsl, imageBox). No maxLod limit: each
+  // view's level count is the limit. One sampler for every element of BINDING_IMAGES.
   VkSamplerCreateInfo samplerInfo{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
   samplerInfo.magFilter = VK_FILTER_LINEAR;
   samplerInfo.minFilter = VK_FILTER_LINEAR;
@@ -186,7 +207,8 @@ void destroyRenderer(Renderer& r) {
                       &r.accumulation})
       destroyBuffer(r.device, *b);
     destroyImage(r.device, r.display);
-    destroyImage(r.device, r.images);
+    destroyImages(r);
+    destroyImage(r.device, r.placeholder);
     if (r.sampler) vkDestroySampler(d, r.sampler, nullptr);
     if (r.timestamps) vkDestroyQueryPool(d, r.timestamps, nullptr);
     if (r.descriptorPool) vkDestroyDescriptorPool(d, r.descriptorPool, nullptr);
@@ -200,7 +222,7 @@ void destroyRenderer(Renderer& r) {
 void uploadScene(Renderer& r, const GpuScene& s) {
   // Checked before anything is replaced: the viewer keeps its last scene when this throws.
   const VkPhysicalDeviceLimits& limits = r.device.properties.limits;
-  std::string over = imagesOverDeviceLimits(s.images, limits.maxImageDimension2D, limits.maxImageArrayLayers);
+  std::string over = imagesOverDeviceLimits(s.images, limits.maxImageDimension2D);
   if (!over.empty()) throw std::runtime_error(over);
   VK_CHECK(vkDeviceWaitIdle(r.device.device));
   // Whole blocks (buildGpuScene keeps to the MAX_* counts); the noise table even when unused.
@@ -211,19 +233,13 @@ void uploadScene(Renderer& r, const GpuScene& s) {
   replaceUniformBuffer(r, r.lights, s.lights.data(), s.lights.size(), MAX_LIGHTS);
   replaceUniformBuffer(r, r.noise, &s.noise, 1);
 
-  destroyImage(r.device, r.images);
-  static const uint8_t placeholder[4] = {255, 0, 255, 255};
-  bool hasImages = s.imageLayers > 0;
-  uint32_t w = hasImages ? uint32_t(s.imageWidth) : 1, h = hasImages ? uint32_t(s.imageHeight) : 1;
-  uint32_t layers = hasImages ? uint32_t(s.imageLayers) : 1;
-  uint32_t levels = hasImages ? uint32_t(s.imageLevels) : 1;  // full mip chains
-  r.images = createImage(r.device, w, h, layers, VK_FORMAT_R8G8B8A8_SRGB,
-                         VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT, true, levels);
-  if (hasImages)
-    uploadImageLayers(r.device, r.images, {{s.imagePixels.data(), s.imagePixels.size()},
-                                           {s.imageMipPixels.data(), s.imageMipPixels.size()}});
-  else
-    uploadImageLayers(r.device, r.images, placeholder, sizeof(placeholder));
+  destroyImages(r);
+  for (const ImageChain& chain : s.imageChains) {
+    r.images.push_back(createImage(r.device, uint32_t(chain.width), uint32_t(chain.height), 1, VK_FORMAT_R8G8B8A8_SRGB,
+                                   VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT, false,
+                                   uint32_t(chain.levels)));
+    uploadImageLayers(r.device, r.images.back(), chain.pixels.data(), chain.pixels.size());
+  }
 
   bool accumulationFits = r.accumulation.size == accumulationBytes(r, r.width, r.height);
   if (s.frame.width != r.width || s.frame.height != r.height || !r.pixels.buffer || !accumulationFits)

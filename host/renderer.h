@@ -37,7 +37,9 @@ struct Renderer {
                             // renders over lavapipe's loop limit, headless.cpp)
   uint32_t displayBgra = 0;  // 1: `display` in B, G, R, A byte order (Frame.displayBgra)
   float sampleWeight = 1.0f;  // of the last renderSample: readbackFrame's mean = sum * weight
-  Image images;     // sampler2DArray of image textures (1x1 placeholder when none)
+  // BINDING_IMAGES' elements: each scene image at its own size; `placeholder` (1 x 1) in the rest.
+  std::vector<Image> images;
+  Image placeholder;
   uint32_t width = 0, height = 0;
   // The output holds bandRows rows: the whole image, or as many as one storage buffer holds
   // (maxStorageBufferRange); the dispatches and readbacks cover the band from bandFirstRow.

@@ -41,6 +41,10 @@ enum class TextureKind {
   Count,  // the number of values
 };
 
+// How an image texture continues outside [0, 1]: tiled, or (clamp, a decal) its edge texels
+// extended, as CLAMP_TO_EDGE.
+enum class ImageWrap { Repeat, Clamp };
+
 struct TextureDesc {
   TextureKind kind = TextureKind::None;
   glm::vec3 color1{1.0f};
@@ -52,6 +56,7 @@ struct TextureDesc {
   int columns = 4;        // bricks per tile along u (bricks)
   float mortar = 0.1f;    // joint width as a fraction of a brick's height (bricks)
   std::string imagePath;  // image: resolved relative to the scene file that names it
+  ImageWrap wrap = ImageWrap::Repeat;  // image
   FileLoc loc;            // where the texture was given, for image load errors
 };
 

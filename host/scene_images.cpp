@@ -1,5 +1,8 @@
 #include "scene_images.h"
 
+#include "common.h"
+#include "image_io.h"
+
 #include <algorithm>
 #include <cstdio>
 
@@ -17,14 +20,9 @@ void checkBudget(const std::vector<SceneImage>& images, bool mipmaps, uint32_t m
   const uint64_t bytes = imageUploadBytes(images, mipmaps);
   if (bytes <= uint64_t(maxImageMiB) * 1024 * 1024) return;
   const SceneImage& last = images.back();
-  int width = 0, height = 0;
-  for (const SceneImage& i : images) {
-    width = std::max(width, i.header.width);
-    height = std::max(height, i.header.height);
-  }
   throw SceneError(last.loc, "image '" + last.path + "' (" + sizeText(last.header) + ") brings the scene's images to " +
                                  mibText(bytes) + " MiB on the GPU (" + std::to_string(images.size()) +
-                                 (images.size() == 1 ? " layer of " : " layers of ") + std::to_string(width) + "x" + std::to_string(height) +
+                                 (images.size() == 1 ? " image at its own size" : " images at their own sizes") +
                                  (mipmaps ? ", 4 bytes a texel, with mip levels" : ", 4 bytes a texel") +
                                  "), over the budget of " + std::to_string(maxImageMiB) +
                                  " MiB (--max-image-mib N raises it)");
@@ -32,14 +30,18 @@ void checkBudget(const std::vector<SceneImage>& images, bool mipmaps, uint32_t m
 
 }  // namespace
 
+uint64_t imageChainBytes(const ImageHeader& header, bool mipmaps) {
+  const int levels = mipmaps ? mipLevelCount(header.width, header.height) : 1;
+  uint64_t bytes = 0;
+  for (int l = 0; l < levels; ++l)
+    bytes += uint64_t(std::max(1, header.width >> l)) * uint64_t(std::max(1, header.height >> l)) * 4;
+  return bytes;
+}
+
 uint64_t imageUploadBytes(const std::vector<SceneImage>& images, bool mipmaps) {
-  uint64_t width = 0, height = 0;
-  for (const SceneImage& i : images) {
-    width = std::max(width, uint64_t(i.header.width));
-    height = std::max(height, uint64_t(i.header.height));
-  }
-  const uint64_t level0 = uint64_t(images.size()) * width * height * 4;
-  return mipmaps ? level0 + level0 / 3 : level0;
+  uint64_t bytes = 0;
+  for (const SceneImage& i : images) bytes += imageChainBytes(i.header, mipmaps);
+  return bytes;
 }
 
 std::vector<SceneImage> probeSceneImages(const Scene& scene, const std::vector<int>& materials, bool mipmaps,
@@ -51,6 +53,9 @@ std::vector<SceneImage> probeSceneImages(const Scene& scene, const std::vector<i
     if (t.kind != TextureKind::Image) continue;
     auto same = [&](const SceneImage& i) { return i.path == t.imagePath; };
     if (std::find_if(images.begin(), images.end(), same) != images.end()) continue;
+    if (images.size() == MAX_IMAGES)
+      throw SceneError(t.loc, "image '" + t.imagePath + "' is the scene's " + std::to_string(MAX_IMAGES + 1) +
+                                  "th image file; raytex renders at most " + std::to_string(MAX_IMAGES));
     SceneImage image{t.imagePath, t.loc, {}};
     std::string error;
     if (!probeImage(image.path, &image.header, &error)) throw SceneError(t.loc, error);
@@ -65,11 +70,7 @@ void decodeSceneImage(const SceneImage& image, uint8_t* rgba) {
   if (!decodeImage(image.path, image.header, rgba, &error)) throw SceneError(image.loc, error);
 }
 
-std::string imagesOverDeviceLimits(const std::vector<SceneImage>& images, uint32_t maxImageDimension2D,
-                                   uint32_t maxImageArrayLayers) {
-  if (images.size() > maxImageArrayLayers)
-    return "the scene uses " + std::to_string(images.size()) + " images; the device holds at most " +
-           std::to_string(maxImageArrayLayers) + " (maxImageArrayLayers)";
+std::string imagesOverDeviceLimits(const std::vector<SceneImage>& images, uint32_t maxImageDimension2D) {
   for (const SceneImage& i : images)
     if (uint32_t(i.header.width) > maxImageDimension2D || uint32_t(i.header.height) > maxImageDimension2D)
       return "image '" + i.path + "' is " + sizeText(i.header) + ": the device's images are at most " +

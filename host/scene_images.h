@@ -1,6 +1,6 @@
 // The image files a scene's materials use, checked from their headers alone before any is
-// decoded: each readable as PNG or JPEG and at most kMaxImageFileSide a side, and the texture
-// array they make on the GPU within a budget. No Vulkan.
+// decoded: each readable as PNG or JPEG and at most kMaxImageFileSide a side, at most
+// MAX_IMAGES of them (common.h), and their textures on the GPU within a budget. No Vulkan.
 #pragma once
 
 #include "image_load.h"
@@ -19,14 +19,17 @@ struct SceneImage {
   ImageHeader header;
 };
 
-// Bytes of the texture array these images make: one layer each at the largest width and the
-// largest height, 4 bytes a texel, and a third more for mip levels when `mipmaps`.
+// Bytes of one image's texture on the GPU: its own size, 4 bytes a texel, and its full mip
+// chain's levels when `mipmaps`.
+uint64_t imageChainBytes(const ImageHeader& header, bool mipmaps);
+// Bytes of these images' textures: the sum of their chains.
 uint64_t imageUploadBytes(const std::vector<SceneImage>& images, bool mipmaps);
 
 // The image files of `materials` (indices into scene.materials; -1, the default material, and
 // non-image textures skipped; each file once), in order of first use, with their headers.
-// Throws SceneError at the texture's location for a file that cannot be probed, and at the
-// first image that brings imageUploadBytes over maxImageMiB.
+// Throws SceneError at the texture's location for a file that cannot be probed, for the image
+// after the first MAX_IMAGES (before its header is read), and at the first image that brings
+// imageUploadBytes over maxImageMiB.
 std::vector<SceneImage> probeSceneImages(const Scene& scene, const std::vector<int>& materials, bool mipmaps,
                                          uint32_t maxImageMiB);
 
@@ -34,7 +37,6 @@ std::vector<SceneImage> probeSceneImages(const Scene& scene, const std::vector<i
 // location when the file is corrupt, truncated or changed since it was probed.
 void decodeSceneImage(const SceneImage& image, uint8_t* rgba);
 
-// Empty when the texture array of these images fits a device's limits; otherwise one line
-// naming the image over them.
-std::string imagesOverDeviceLimits(const std::vector<SceneImage>& images, uint32_t maxImageDimension2D,
-                                   uint32_t maxImageArrayLayers);
+// Empty when these images fit a device's maxImageDimension2D; otherwise one line naming the
+// image over it. (Their count fits every device: MAX_IMAGES is Vulkan's minimum.)
+std::string imagesOverDeviceLimits(const std::vector<SceneImage>& images, uint32_t maxImageDimension2D);

@@ -52,6 +52,9 @@ TextureDesc noiseDefaults(TextureKind kind, glm::vec3 color1, glm::vec3 color2, 
   return t;
 }
 
+void setWrap(TextureDesc& t, size_t word) { t.wrap = word == 1 ? ImageWrap::Clamp : ImageWrap::Repeat; }
+size_t wrapWord(const TextureDesc& t) { return t.wrap == ImageWrap::Clamp ? 1 : 0; }
+
 double noPeriod(const TextureDesc&) { return 0.0; }
 // The parity of floor(solid * squares) summed over the axes repeats every 2 / squares.
 double solidCheckerPeriod(const TextureDesc& t) { return 2.0 / double(t.squares); }
@@ -80,6 +83,11 @@ std::vector<TextureKindInfo> makeKinds() {
                                        &TextureDesc::mortar, "joint width, a fraction of a brick's height");
   const TextureKey kFile{"file", KeyType::File, MaterialSlot::ImageFile, {},
                          "PNG or JPEG file, relative to the scene file that names it"};
+  TextureKey wrap{"wrap", KeyType::Word, MaterialSlot::ImageWrap, {},
+                  "repeat: the image tiles; clamp: once, its edge texels beyond (a decal)"};
+  wrap.words = {"repeat", "clamp"};
+  wrap.setWord = setWrap;
+  wrap.word = wrapWord;
   const std::vector<TextureKey> noiseKeys = {kColor1, kColor2, kScale, kStrength, kOctaves};
   TextureDesc checker = defaults(K::Checker, glm::vec3(0.9f), glm::vec3(0.1f));
   checker.squares = 2.0f;
@@ -92,7 +100,7 @@ std::vector<TextureKindInfo> makeKinds() {
   bricks.columns = 4;
   bricks.mortar = 0.1f;
   return {
-      {K::Image, "image", false, false, {kFile}, defaults(K::Image, glm::vec3(1.0f), glm::vec3(0.0f)), noPeriod},
+      {K::Image, "image", false, false, {kFile, wrap}, defaults(K::Image, glm::vec3(1.0f), glm::vec3(0.0f)), noPeriod},
       {K::Checker, "checker", false, false, {kColor1, kColor2, kSquares}, checker, noPeriod},
       {K::SolidChecker, "solid_checker", true, false, {kColor1, kColor2, kSquares}, solidChecker, solidCheckerPeriod},
       {K::Noise, "noise", true, true, {kColor1, kColor2, kScale}, noise, latticePeriod},
@@ -127,6 +135,7 @@ std::string defaultText(const TextureKey& key, const TextureDesc& d) {
     case KeyType::Number: return "`" + number(d.*key.number) + "`";
     case KeyType::Whole: return "`" + number(d.*key.whole) + "`";
     case KeyType::File: return "required";
+    case KeyType::Word: return "`" + std::string(key.words[key.word(d)]) + "`";
   }
   return "";
 }
@@ -137,6 +146,7 @@ const char* typeText(KeyType type) {
     case KeyType::Number: return "number";
     case KeyType::Whole: return "number";
     case KeyType::File: return "string";
+    case KeyType::Word: return "word";
   }
   return "";
 }
@@ -144,6 +154,7 @@ const char* typeText(KeyType type) {
 std::string validText(const TextureKey& key) {
   if (key.type == KeyType::Colour) return "components >= 0";
   if (key.type == KeyType::File) return "not empty, at most 4096 bytes";
+  if (key.type == KeyType::Word) return describeWords(key);
   return describeRange(key.range);
 }
 
@@ -206,6 +217,13 @@ std::string describeRange(const KeyRange& r) {
   return lo.empty() ? hi : hi.empty() ? lo : lo + " and " + hi;
 }
 
+std::string describeWords(const TextureKey& key) {
+  std::string text;
+  for (size_t i = 0; i < key.words.size(); ++i)
+    text += (i == 0 ? "" : i + 1 == key.words.size() ? " or " : ", ") + std::string(key.words[i]);
+  return text;
+}
+
 bool inRange(const KeyRange& r, double v) {
   bool aboveLo = r.loOpen ? v > r.lo : v >= r.lo;
   bool belowHi = r.hiOpen ? v < r.hi : v <= r.hi;
@@ -240,7 +258,8 @@ void packTexture(const TextureDesc& texture, gpu::Material* g) {
       case MaterialSlot::ParamZ: g->params.z = value; break;
       case MaterialSlot::ParamW: g->params.w = value; break;
       case MaterialSlot::Octaves: g->octaves = uint32_t(texture.*key.whole); break;
-      case MaterialSlot::ImageFile: break;  // the image's layer: set by the caller
+      case MaterialSlot::ImageFile:  // the image's element and wrap: packed with the scene's images
+      case MaterialSlot::ImageWrap: break;
     }
   }
 }

@@ -14,10 +14,11 @@
 #include <vector>
 
 // How a key's value is written in a scene file.
-enum class KeyType { Colour, Number, Whole, File };
+enum class KeyType { Colour, Number, Whole, File, Word };
 
 // Where packMaterial puts a key's value in gpu::Material (shaders/common.h).
-enum class MaterialSlot { Color1, Color2, ParamX, ParamY, ParamZ, ParamW, Octaves, ImageFile };
+// ImageFile and ImageWrap: packed with the scene's images (gpu_scene.cpp, packImageFields).
+enum class MaterialSlot { Color1, Color2, ParamX, ParamY, ParamZ, ParamW, Octaves, ImageFile, ImageWrap };
 
 // A number key's valid values: lo < (or <=) value < (or <=) hi; whole: an integer.
 struct KeyRange {
@@ -36,6 +37,10 @@ struct TextureKey {
   glm::vec3 TextureDesc::*colour = nullptr;
   float TextureDesc::*number = nullptr;
   int TextureDesc::*whole = nullptr;
+  // A Word key: the words it takes, and how the i-th is stored and read back.
+  std::vector<const char*> words;
+  void (*setWord)(TextureDesc&, size_t) = nullptr;
+  size_t (*word)(const TextureDesc&) = nullptr;
 };
 
 struct TextureKindInfo {
@@ -80,6 +85,9 @@ std::string textureKindList();
 // What a number key accepts, as messages and the docs say it: "> 0", "a whole number from 1
 // to 16", "any".
 std::string describeRange(const KeyRange& range);
+
+// "repeat or clamp": the words a Word key takes.
+std::string describeWords(const TextureKey& key);
 
 // Whether `value` is within `range`.
 bool inRange(const KeyRange& range, double value);

@@ -74,7 +74,7 @@ struct ViewerState {
 // the scene on screen.
 struct ImageLimits {
   PackOptions pack;  // every material (a key switches to it), mip chains for the filtered kernel
-  uint32_t maxImageDimension2D = 0, maxImageArrayLayers = 0;  // the device's
+  uint32_t maxImageDimension2D = 0;  // the device's
   bool lavapipe = false;  // its driver's loop limit applies (scene_limits.h)
 };
 
@@ -193,7 +193,7 @@ void reloadIfChanged(ViewerState& state, const std::string& path, const ReadPoli
     times = fileTimes(scene);
     if (limits.lavapipe) checkLoopLimit(scene);
     GpuScene gpuScene = buildGpuScene(scene, 1, 1, limits.pack);
-    std::string over = imagesOverDeviceLimits(gpuScene.images, limits.maxImageDimension2D, limits.maxImageArrayLayers);
+    std::string over = imagesOverDeviceLimits(gpuScene.images, limits.maxImageDimension2D);
     if (!over.empty()) throw std::runtime_error(over);
     state.scene = std::move(scene);
     state.reloaded = std::move(gpuScene);
@@ -247,15 +247,18 @@ std::string title(const ViewerState& state, uint32_t samples, uint32_t target, d
   return t;
 }
 
-// The pipeline that renders `scene` progressively with the job's settings.
-PipelineKey viewerKey(const Scene& scene, const RenderJob& job) {
-  return {sceneShape(scene), OUTPUT_SHADED, uint32_t(job.filterBox ? FILTER_BOX : FILTER_POINT),
-          job.samplesPerSide, 1};
+// The pipeline that renders `scene` progressively with the job's settings. Every material is
+// packed, so an object's image may be any of the `packedImages` elements of BINDING_IMAGES.
+PipelineKey viewerKey(const Scene& scene, const RenderJob& job, size_t packedImages) {
+  SceneShape shape = sceneShape(scene);
+  if (shape.imageCount > 0) shape.imageCount = uint32_t(packedImages);
+  return {shape, OUTPUT_SHADED, uint32_t(job.filterBox ? FILTER_BOX : FILTER_POINT), job.samplesPerSide, 1};
 }
 
 // A pipeline a key could need next that has not run yet: the course materials on the sphere,
 // then on the plane. False when all are ready.
-bool nextPipelineToWarm(const ViewerState& state, const Renderer& renderer, const RenderJob& job, PipelineKey* key) {
+bool nextPipelineToWarm(const ViewerState& state, const Renderer& renderer, const RenderJob& job, size_t packedImages,
+                        PipelineKey* key) {
   for (int onPlane = 0; onPlane < 2; ++onPlane)
     for (const char* name : kCourseMaterials) {
       int index = materialIndex(state.scene, name);
@@ -265,7 +268,7 @@ bool nextPipelineToWarm(const ViewerState& state, const Renderer& renderer, cons
         for (Plane& p : switched.planes) p.material = index;
       else
         for (Sphere& s : switched.spheres) s.material = index;
-      *key = viewerKey(switched, job);
+      *key = viewerKey(switched, job, packedImages);
       if (!pipelineWarm(renderer, *key)) return true;
     }
   return false;
@@ -353,7 +356,7 @@ int runViewer(const RenderOptions& options) {
       PipelineKey warm;
       if (busy || options.frames) {
         glfwPollEvents();
-      } else if (nextPipelineToWarm(state, renderer, job, &warm)) {
+      } else if (nextPipelineToWarm(state, renderer, job, gpuScene.images.size(), &warm)) {
         // Idle: compile what a key may need next, so that the switch shows on the next frame.
         warmPipeline(renderer, warm);
         glfwPollEvents();
@@ -391,7 +394,7 @@ int runViewer(const RenderOptions& options) {
       if (options.frames && samples == target) samples = 0;  // --frames: keep rendering
       bool render = samples < target;
       if (render) {
-        preparePipeline(renderer, viewerKey(state.scene, job));
+        preparePipeline(renderer, viewerKey(state.scene, job, gpuScene.images.size()));
         renderSample(renderer, samples++);
         stats.gpuMs.push_back(renderer.lastFrameMs);
       }
@@ -422,7 +425,7 @@ int runViewer(const RenderOptions& options) {
       if (now - lastTitle > std::chrono::milliseconds(250)) {  // also the reload poll
         const VkPhysicalDeviceLimits& device = renderer.device.properties.limits;
         reloadIfChanged(state, options.scene, ReadPolicy{options.allowRead}, times,
-                        {pack, device.maxImageDimension2D, device.maxImageArrayLayers, renderer.device.lavapipe});
+                        {pack, device.maxImageDimension2D, renderer.device.lavapipe});
         double frameMs = stats.frameMs.empty() ? 0.0 : stats.frameMs.back();
         glfwSetWindowTitle(window.window, title(state, samples, target, frameMs, renderer.lastFrameMs).c_str());
         lastTitle = now;

@@ -82,7 +82,7 @@ BAKED_WORDS_10(51)
 // Sphere: centerRadius, texRotation, solidOffset, material, uOffset, vOffset, clampV. Plane:
 // normalDistance, tangentScale, binormal, uvOffset, solidOffset, texRotation, imageRight,
 // imageDown, material. Light: position, color. Material: ambient, diffuse, specular, color1,
-// color2, params, textureKind, octaves, imageLayer.
+// color2, params, textureKind, octaves, imageIndex, imageSize.
 #define BAKED_SPHERE(t, u)                                                                                 \
   Sphere(BAKED_VEC4(t, 0, 1, 2, 3), BAKED_VEC4(t, 4, 5, 6, 7), BAKED_VEC4_ACROSS(t, u), bakedWord##u##_2,  \
          uintBitsToFloat(bakedWord##u##_3), uintBitsToFloat(bakedWord##u##_4), bakedWord##u##_5)
@@ -94,7 +94,7 @@ BAKED_WORDS_10(51)
 #define BAKED_MATERIAL(t, u, v)                                                                            \
   Material(BAKED_VEC4(t, 0, 1, 2, 3), BAKED_VEC4(t, 4, 5, 6, 7), BAKED_VEC4_ACROSS(t, u),                 \
            BAKED_VEC4(u, 2, 3, 4, 5), BAKED_VEC4(u, 6, 7, 8, 9), BAKED_VEC4(v, 0, 1, 2, 3),               \
-           bakedWord##v##_4, bakedWord##v##_5, bakedWord##v##_6, 0u)
+           bakedWord##v##_4, bakedWord##v##_5, bakedWord##v##_6, bakedWord##v##_7)
 
 // Slot k of each kind (k is a constant once the driver unrolls the caller's loop; slots past
 // MAX_BAKED_* give the last one).

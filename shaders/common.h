@@ -31,7 +31,8 @@ using uvec4 = glm::uvec4;
 #define BINDING_MATERIALS 4  // uniform Material[MAX_MATERIALS]
 #define BINDING_LIGHTS 5     // uniform Light[MAX_LIGHTS]
 #define BINDING_NOISE 6      // uniform NoiseTable (a UBO: an SSBO is 1.6x slower on lavapipe)
-#define BINDING_IMAGES 7     // sampler2DArray, one layer per image texture
+#define BINDING_IMAGES 7     // sampler2D[MAX_IMAGES], one element per image file at its own size
+                             // (1 x 1 placeholders past the scene's images)
 #define BINDING_ACCUMULATION 8  // storage vec4[width * height]: running sums of progressive
                                 // rendering (a 16-byte placeholder when not accumulating)
 #define BINDING_DISPLAY 9  // r32ui storage image: progressive rendering's mean as 8-bit sRGB in the
@@ -44,6 +45,11 @@ using uvec4 = glm::uvec4;
 #define MAX_SPHERES 1024   // 1024 * 64 bytes = 64 KiB
 #define MAX_PLANES 256     // 256 * 144 bytes = 36 KiB
 #define MAX_LIGHTS 256     // 256 * 32 bytes = 8 KiB
+// Image files per scene: one combined image sampler each, picked by a switch over constant
+// indices (lavapipe indexes sampler arrays only with constants). 16 is Vulkan's guaranteed
+// minimum of maxPerStageDescriptorSamplers and maxPerStageDescriptorSampledImages, so every
+// device holds them.
+#define MAX_IMAGES 16
 
 // Texture kinds (Material.textureKind; one row each in host/texture_kinds.cpp, GLSL in
 // shaders/kinds/). Bit (1 << kind) of SPEC_SPHERE_TEXTURE_KINDS and
@@ -75,6 +81,7 @@ using uvec4 = glm::uvec4;
 #define SPEC_PLANE_COUNT 6
 #define SPEC_LIGHT_COUNT 7
 #define SPEC_TEXTURE_PLACEMENT 10  // false: no object's placement needs the kernel (mapping.glsl)
+#define SPEC_IMAGE_COUNT 11  // image files the scene's objects use (switch cases past it compile out)
 
 // Scenes with at most this many spheres, planes or lights get kernels with the count
 // built in (the loops over them unrolled); larger ones loop to Frame's count. On lavapipe a
@@ -121,6 +128,9 @@ using uvec4 = glm::uvec4;
 #define FILTER_POINT 0  // point-sample textures at the hit (the course's method)
 #define FILTER_BOX 1    // average over the sample's footprint (ray differentials), where the
                         // kind has a closed form: checker, solid_checker
+
+// Material.imageIndex's wrap bit: the image appears once (CLAMP_TO_EDGE), not tiled.
+#define IMAGE_WRAP_CLAMP 0x10000u
 
 // What the kernel writes per pixel.
 #define OUTPUT_SHADED 0  // rgb = linear radiance, a = 1
@@ -205,8 +215,10 @@ struct Material {
   vec4 params;     // x: scale (frequency), y: strength (turbulence amount), z: squares, w: unused
   uint textureKind;  // TEX_*
   uint octaves;
-  uint imageLayer;   // layer of BINDING_IMAGES for TEX_IMAGE
-  uint pad0;
+  // TEX_IMAGE: bits 0-7 the element of BINDING_IMAGES, bits 8-15 its mip levels, bit 16
+  // (IMAGE_WRAP_CLAMP) wrap = clamp; imageSize: width | height << 16 (sides <= 16384).
+  uint imageIndex;
+  uint imageSize;
 };
 
 struct Light {

@@ -17,6 +17,7 @@ struct TexCoord {
   vec2 tile;    // index of the repeated tile, the floors of the unwrapped (u, v) (planes: mod 4096)
   vec3 solid;   // solid-texture coordinate: plane p' / s, sphere (n' + 1) / 2s, plus tex_offset
   vec2 image;   // image lookup (column, row) in [0,1], row 0 at the top (docs/textures.md)
+  vec2 imageTile;  // the floors of the unwrapped image lookup (imageTile + image)
   bool clampV;  // image lookups must not wrap in v (the sphere's poles)
 };
 
@@ -59,7 +60,8 @@ TexCoord planeTexCoord(Plane pl, vec3 p) {
   tc.solid = clampTexCoord(rotateByQuaternion(pl.texRotation, p) / s) + pl.solidOffset.xyz;
   vec2 image = clampTexCoord(vec2(dot(p, pl.imageRight.xyz), dot(p, pl.imageDown.xyz)) / s) +
                vec2(pl.imageRight.w, pl.imageDown.w);
-  tc.image = image - floor(image);
+  tc.imageTile = floor(image);
+  tc.image = image - tc.imageTile;
   tc.clampV = false;
   return tc;
 }
@@ -110,6 +112,7 @@ TexCoord sphereTexCoord(Sphere sp, vec3 n, bool latLong) {
   tc.solid = (m + 1.0) * 0.5;
   if (TEXTURE_PLACEMENT) tc.solid = clampTexCoord(tc.solid / sp.solidOffset.w) + sp.solidOffset.xyz;
   tc.image = vec2(1.0) - tc.uv;
+  tc.imageTile = -tc.tile;  // 1 - (tile + uv)
   tc.clampV = !TEXTURE_PLACEMENT || sp.clampV != 0u;
   return tc;
 }

@@ -8,7 +8,8 @@
 // Needs (declared by the including kernel, after common.h, noise.glsl, mapping.glsl, and
 // footprint.glsl when RAYTEX_FILTER_BOX is defined):
 //   const uint TEXTURE_KINDS;  // bit (1u << TEX_*): the kinds on any shape (spec constants)
-//   layout(binding = BINDING_IMAGES) uniform sampler2DArray images;
+//   const uint IMAGE_COUNT;  // image files in use (spec constant)
+//   layout(binding = BINDING_IMAGES) uniform sampler2D images[MAX_IMAGES];
 // Every case sits behind its TEXTURE_KINDS bit, so a pipeline specialised for a scene keeps
 // only the kinds it uses (a checker-only scene has no noise code).
 #ifndef RAYTEX_TEXTURES_GLSL

@@ -18,6 +18,7 @@ const uint TEXTURE_KINDS = SPHERE_TEXTURE_KINDS | PLANE_TEXTURE_KINDS;
 layout(constant_id = SPEC_SPHERE_COUNT) const uint SPHERE_COUNT = COUNT_FROM_FRAME;
 layout(constant_id = SPEC_PLANE_COUNT) const uint PLANE_COUNT = COUNT_FROM_FRAME;
 layout(constant_id = SPEC_LIGHT_COUNT) const uint LIGHT_COUNT = COUNT_FROM_FRAME;
+layout(constant_id = SPEC_IMAGE_COUNT) const uint IMAGE_COUNT = MAX_IMAGES;
 layout(constant_id = SPEC_OUTPUT_MODE) const uint OUTPUT_MODE = OUTPUT_SHADED;
 // A constant, not a uniform: around the whole shading code, a loop with a runtime bound
 // doubled the 1-sample frame time on lavapipe (119 -> 216 ms at 1080p).
@@ -34,7 +35,7 @@ layout(std140, binding = BINDING_PLANES) uniform PlaneBlock { Plane planeBlock[M
 layout(std140, binding = BINDING_MATERIALS) uniform MaterialBlock { Material materials[MAX_MATERIALS]; };
 layout(std140, binding = BINDING_LIGHTS) uniform LightBlock { Light lightBlock[MAX_LIGHTS]; };
 layout(std140, binding = BINDING_NOISE) uniform NoiseBlock { NoiseTable noiseTable; };
-layout(binding = BINDING_IMAGES) uniform sampler2DArray images;
+layout(binding = BINDING_IMAGES) uniform sampler2D images[MAX_IMAGES];
 layout(std430, binding = BINDING_ACCUMULATION) buffer AccumulationBlock { vec4 accumulation[]; };
 layout(binding = BINDING_DISPLAY, r32ui) uniform writeonly uimage2D displayImage;
 

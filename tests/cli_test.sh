@@ -88,8 +88,16 @@ check validate-no-errors bash -c "! '$raytex' render '$src/scenes/textures.cfg' 
   --height 48 --spp 4 --validate 2>&1 | grep -q 'validation'"
 
 # Success: a PNG of the requested size, and the stats line.
-expect render 0 '^device [0-9.]+ ms \| parse [0-9.]+ ms .* encode [0-9.]+ ms \| 64x48, 1 spp$' -- \
+expect render 0 '^device [0-9.]+ ms \| parse [0-9.]+ ms .* encode [0-9.]+ ms \| images 0.0 MiB \| 64x48, 1 spp$' -- \
   "$raytex" render "$src/scenes/textures.cfg" -o "$tmp/ok.png" --width 64 --height 48 --stats
+# The image textures' GPU memory: the sum of their own chains (earth.jpg 2048x1024: 8.0 MiB,
+# 10.7 MiB with the box filter's mip levels).
+sed 's|^    aSolidChecker;|    anImage;|' "$src/scenes/textures.cfg" >"$src/scenes/.cli-test-image.cfg"
+expect stats-images 0 '\| images 8.0 MiB \| 64x48, 1 spp$' -- \
+  "$raytex" render "$src/scenes/.cli-test-image.cfg" -o "$tmp/ok.png" --width 64 --height 48 --stats
+expect stats-images-box 0 '\| images 10.7 MiB \| 64x48, 1 spp$' -- \
+  "$raytex" render "$src/scenes/.cli-test-image.cfg" -o "$tmp/ok.png" --width 64 --height 48 --stats --filter box
+rm -f "$src/scenes/.cli-test-image.cfg"
 check png-signature test "$(head -c 8 "$tmp/ok.png" | od -An -tx1 | tr -d ' \n')" = 89504e470d0a1a0a
 check png-size test "$(od -An -tu1 -j16 -N8 "$tmp/ok.png" | tr -s ' ')" = " 0 0 0 64 0 0 0 48"
 check no-temp-files test "$(ls "$tmp" | grep -c tmp-)" -eq 0
@@ -187,7 +195,7 @@ printf 'material e { texture = image { file = "%s/textures/earth.jpg"; }; }\nsph
 for command in render "render --reference" bench; do
   # shellcheck disable=SC2086  # the command's words
   expect "image-budget-${command// /-}" 2 "^$tmp/earth.cfg:1:39: image '$src/textures/earth.jpg' \(2048x1024\) brings \
-the scene's images to 8.0 MiB on the GPU \(1 layer of 2048x1024, 4 bytes a texel\), over the budget of 1 MiB \
+the scene's images to 8.0 MiB on the GPU \(1 image at its own size, 4 bytes a texel\), over the budget of 1 MiB \
 \(--max-image-mib N raises it\)$" -- "$raytex" $command "$tmp/earth.cfg" --max-image-mib 1 -o "$tmp/budget.png"
 done
 check image-budget-no-output test ! -e "$tmp/budget.png"

@@ -19,8 +19,8 @@ TEST(GpuScene, CourseSceneUploadsOnlyTheMaterialsItUses) {
   GpuScene g = buildGpuScene(scene, 64, 48);
   EXPECT_EQ(g.materials.size(), 2u);  // aSolidChecker and aChecker of eight defined
   EXPECT_EQ(g.shape.kinds(), (1u << TEX_SOLID_CHECKER) | (1u << TEX_CHECKER));
-  EXPECT_EQ(g.imageLayers, 0);  // anImage is defined but unused: earth.jpg is not loaded
-  EXPECT_TRUE(g.imagePixels.empty());
+  EXPECT_TRUE(g.imageChains.empty());  // anImage is defined but unused: earth.jpg is not loaded
+  EXPECT_EQ(g.shape.imageCount, 0u);
   ASSERT_EQ(g.spheres.size(), 1u);
   ASSERT_EQ(g.planes.size(), 1u);
   EXPECT_EQ(g.materials[g.spheres[0].material].textureKind, uint32_t(TEX_SOLID_CHECKER));
@@ -191,16 +191,17 @@ TEST(GpuScene, MissingOrBrokenImageIsASceneErrorAtTheFileKey) {
   }
 }
 
-TEST(GpuScene, ImagesShareOneArrayLayerPerFile) {
+TEST(GpuScene, ImagesKeepOneChainPerFileAtItsOwnSize) {
   Scene scene = parseSceneFile(kSourceDir + "/scenes/textures.cfg");
   for (Sphere& s : scene.spheres)
     for (size_t i = 0; i < scene.materials.size(); ++i)
       if (scene.materials[i].name == "anImage") s.material = int(i);
-  GpuScene g = buildGpuScene(scene, 8, 8);
-  EXPECT_EQ(g.imageLayers, 1);
-  EXPECT_EQ(g.imageWidth, 2048);
-  EXPECT_EQ(g.imageHeight, 1024);
-  EXPECT_EQ(g.imagePixels.size(), size_t(2048) * 1024 * 4);
+  GpuScene g = buildGpuScene(scene, 8, 8, PackOptions{false});
+  ASSERT_EQ(g.imageChains.size(), 1u);
+  EXPECT_EQ(g.shape.imageCount, 1u);
+  EXPECT_EQ(g.imageChains[0].width, 2048);
+  EXPECT_EQ(g.imageChains[0].height, 1024);
+  EXPECT_EQ(g.imageChains[0].pixels.size(), size_t(2048) * 1024 * 4);
 }
 
 }  // namespace
@@ -270,6 +271,34 @@ TEST(SceneLimits, MoreIntersectionTestsPerSampleThanLavapipeLoopsOverIsASceneErr
   }
 }
 
+// Every material for the viewer, but no image file past the first MAX_IMAGES: a material whose
+// image would be the 17th is left out (packed when an object takes it), not refused.
+TEST(GpuScene, AllMaterialsLeavesOutImagesPastTheLimit) {
+  std::string text = "material earth { texture = image { file = \"../../../textures/earth.jpg\"; } }\n";
+  for (int i = 1; i <= MAX_IMAGES; ++i) {
+    char name[16];
+    snprintf(name, sizeof(name), "%02d", i);
+    text += std::string("material m") + name + " { texture = image { file = \"count/" + name + ".png\"; } }\n";
+  }
+  text += "sphere { radius = 1; m16; }\n";
+  Scene scene = parseSceneText(text, std::string(RAYTEX_SOURCE_DIR) + "/tests/malformed/images/all.cfg");
+  PackOptions pack;
+  pack.mipmaps = false;
+  pack.allMaterials = true;
+  GpuScene g = buildGpuScene(scene, 8, 8, pack);
+  ASSERT_EQ(g.images.size(), size_t(MAX_IMAGES));
+  EXPECT_NE(g.images[0].path.find("count/16.png"), std::string::npos);  // the object's first
+  EXPECT_EQ(g.materials.size(), size_t(MAX_IMAGES));
+  // In order of definition: earth.jpg, count/01 .. count/14 fit; count/15.png would be the 17th.
+  EXPECT_EQ(g.materialIndex.count(0), 1u);
+  EXPECT_EQ(g.materialIndex.count(15), 0u);
+  EXPECT_EQ(g.shape.imageCount, 1u);
+  scene.spheres[0].material = 15;  // an object takes it: packed first
+  g = buildGpuScene(scene, 8, 8, pack);
+  EXPECT_EQ(g.materialIndex.at(15), 0u);
+  EXPECT_NE(g.images[0].path.find("count/15.png"), std::string::npos);
+}
+
 TEST(GpuScene, AllMaterialsPacksUnusedOnesButSpecialisesToTheUsed) {
   Scene scene = parseSceneFile(std::string(RAYTEX_SOURCE_DIR) + "/scenes/textures.cfg");
   PackOptions pack;
@@ -280,6 +309,6 @@ TEST(GpuScene, AllMaterialsPacksUnusedOnesButSpecialisesToTheUsed) {
   EXPECT_EQ(used.materials.size(), 2u);
   EXPECT_EQ(all.materials.size(), scene.materials.size());
   EXPECT_EQ(all.shape, used.shape);
-  EXPECT_EQ(all.imageLayers, 1);  // anImage's earth.jpg, ready for a switch
-  EXPECT_EQ(used.imageLayers, 0);
+  EXPECT_EQ(all.imageChains.size(), 1u);  // anImage's earth.jpg, ready for a switch
+  EXPECT_EQ(used.imageChains.size(), 0u);
 }

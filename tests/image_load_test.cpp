@@ -205,24 +205,35 @@ PackOptions budget(bool mipmaps, uint32_t maxImageMiB) {
 }
 PackOptions noMipmaps() { return budget(false, kDefaultMaxImageMiB); }
 
-Scene wideAndTallScene() { return parseSceneFile(kSourceDir + "/tests/malformed/image-wide-and-tall-over-budget.cfg"); }
+// A 16384x1 and a 1x16384 PNG (208 bytes) at their own sizes: 128 KiB on the GPU (main's one
+// array of layers at the largest size made them 2 GiB and refused them).
+TEST(SceneImages, WideAndTallImagesTakeTheirOwnSizes) {
+  Scene scene = parseSceneText("material wide { texture = image { file = \"images/wide-16384.png\"; } }\n"
+                               "material tall { texture = image { file = \"images/tall-16384.png\"; } }\n"
+                               "sphere { radius = 1; wide; }\nsphere { center = (3, 0, 0); radius = 1; tall; }\n",
+                               kSourceDir + "/tests/malformed/wide_and_tall.cfg");
+  EXPECT_EQ(imageUploadBytes(probeSceneImages(scene, {0, 1}, false, 1), false), uint64_t(16384) * 4 * 2);
+  GpuScene g = buildGpuScene(scene, 8, 8, noMipmaps());
+  ASSERT_EQ(g.imageChains.size(), 2u);
+  EXPECT_EQ(g.imageChains[1].width, 1);
+  EXPECT_EQ(g.imageChains[1].height, 16384);
+}
 
-// A 16384x1 and a 1x16384 PNG (208 bytes) would make a 16384x16384 array of two layers, 2 GiB:
-// refused from their headers, at the second image's `file` value, before anything is decoded.
-TEST(SceneImages, WideAndTallImagesOverTheBudgetAreRefusedBeforeDecoding) {
-  Scene scene = wideAndTallScene();
+// A 16384x16384 header (45 bytes, no pixel data) is 1 GiB: refused from its header, at its
+// `file` value, before anything is decoded, by both renderers.
+TEST(SceneImages, ImagesOverTheBudgetAreRefusedBeforeDecoding) {
+  Scene scene = parseSceneFile(kSourceDir + "/tests/malformed/image-over-budget.cfg");
   try {
     buildGpuScene(scene, 8, 8, noMipmaps());
     FAIL() << "expected a SceneError";
   } catch (const SceneError& e) {
     EXPECT_EQ(e.loc.line, 4);
     EXPECT_EQ(e.loc.column, 42);
-    std::string what = e.what();
-    EXPECT_NE(what.find("'" + kSourceDir + "/tests/malformed/images/tall-16384.png' (1x16384) brings the scene's "
-                        "images to 2048.0 MiB on the GPU (2 layers of 16384x16384"),
+    EXPECT_NE(std::string(e.what()).find("header-16384.png' (16384x16384) brings the scene's images to 1024.1 MiB on "
+                                         "the GPU (2 images at their own sizes, 4 bytes a texel), over the budget of "
+                                         "512 MiB (--max-image-mib N raises it)"),
               std::string::npos)
-        << what;
-    EXPECT_NE(what.find("over the budget of 512 MiB (--max-image-mib N raises it)"), std::string::npos) << what;
+        << e.what();
   }
   EXPECT_THROW(loadReferenceImages(scene), SceneError);  // --reference: the same check
 }
@@ -236,29 +247,62 @@ Scene earthAndGridScene() {
       kSourceDir + "/scenes/budget_test.cfg");
 }
 
-// The count is layers x largest width x largest height x 4, a third more with mip levels:
-// earth.jpg (2048x1024) and uv_grid.png (512x256) make 16 MiB, 21.3 MiB with mip levels.
+// The count is the sum of the images' own chains, 4 bytes a texel: earth.jpg (2048x1024) and
+// uv_grid.png (512x256) make 8.5 MiB, 11.33 MiB with their mip levels (on main's one array of
+// layers at the largest size they counted 16 and 21.3 MiB).
 TEST(SceneImages, BudgetCountsWhatIsUploaded) {
   Scene scene = earthAndGridScene();
-  EXPECT_EQ(imageUploadBytes(probeSceneImages(scene, {0, 1}, false, 16), false), uint64_t(16) << 20);
-  EXPECT_NO_THROW(buildGpuScene(scene, 8, 8, budget(false, 16)));
-  EXPECT_THROW(buildGpuScene(scene, 8, 8, budget(true, 21)), SceneError);
-  EXPECT_NO_THROW(buildGpuScene(scene, 8, 8, budget(true, 22)));
-  EXPECT_THROW(buildGpuScene(scene, 8, 8, budget(false, 15)), SceneError);
-  EXPECT_THROW(loadReferenceImages(scene, 15), SceneError);
-  EXPECT_EQ(loadReferenceImages(scene, 16).size(), size_t(2));
+  std::vector<SceneImage> images = probeSceneImages(scene, {0, 1}, false, 16);
+  EXPECT_EQ(imageUploadBytes(images, false), uint64_t(2048 * 1024 + 512 * 256) * 4);
+  EXPECT_EQ(imageChainBytes(images[1].header, true), uint64_t(4) * (512 * 256 + 256 * 128 + 128 * 64 + 64 * 32 +
+                                                                    32 * 16 + 16 * 8 + 8 * 4 + 4 * 2 + 2 * 1 + 1 * 1));
+  EXPECT_NO_THROW(buildGpuScene(scene, 8, 8, budget(false, 9)));
+  EXPECT_THROW(buildGpuScene(scene, 8, 8, budget(true, 11)), SceneError);
+  EXPECT_NO_THROW(buildGpuScene(scene, 8, 8, budget(true, 12)));
+  EXPECT_THROW(buildGpuScene(scene, 8, 8, budget(false, 8)), SceneError);
+  EXPECT_THROW(loadReferenceImages(scene, 8), SceneError);
+  EXPECT_EQ(loadReferenceImages(scene, 9).size(), size_t(2));
+}
+
+// More than MAX_IMAGES image files: refused at the first one over, at its `file`, before its
+// header is read (it need not exist), by both renderers; a file named again counts once.
+TEST(SceneImages, MoreImagesThanTheKernelBindsIsASceneError) {
+  fs::path dir = freshTempDir("image_count");
+  ImageRGBA8 pixel{1, 1, {10, 20, 30, 255}};
+  std::vector<uint8_t> png = encodePng(pixel);
+  std::string text;
+  for (int i = 0; i <= MAX_IMAGES; ++i) {
+    std::string name = "i" + std::to_string(i) + ".png";
+    if (i < MAX_IMAGES)
+      std::ofstream(dir / name, std::ios::binary).write(reinterpret_cast<const char*>(png.data()), long(png.size()));
+    text += "material m" + std::to_string(i) + " { texture = image { file = \"" + name + "\"; }; }\n";
+  }
+  std::string sixteen = text + "material again { texture = image { file = \"i0.png\"; }; }\n";
+  for (int i = 0; i < MAX_IMAGES; ++i) sixteen += "sphere { center = (" + std::to_string(3 * i) + ", 0, 0); m" + std::to_string(i) + "; }\n";
+  sixteen += "sphere { center = (0, 5, 0); again; }\n";
+  EXPECT_EQ(buildGpuScene(parseSceneText(sixteen, (dir / "s.cfg").string()), 8, 8).images.size(), size_t(MAX_IMAGES));
+  Scene over = parseSceneText(sixteen + "sphere { center = (0, 9, 0); m16; }\n", (dir / "s.cfg").string());
+  try {
+    buildGpuScene(over, 8, 8);
+    ADD_FAILURE() << "17 image files accepted";
+  } catch (const SceneError& e) {
+    EXPECT_EQ(e.loc.line, 17);
+    EXPECT_NE(std::string(e.what()).find("i16.png' is the scene's 17th image file; raytex renders at most 16"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_THROW(loadReferenceImages(over), SceneError);
 }
 
 // After the device is created: an image over its maxImageDimension2D (16384 on lavapipe, so
 // the header check stops larger ones first) is named, and uploadScene throws it (exit 1).
 TEST(SceneImages, DeviceLimitsNameTheImageOverThem) {
   GpuScene g = buildGpuScene(earthAndGridScene(), 8, 8, noMipmaps());
-  EXPECT_EQ(imagesOverDeviceLimits(g.images, 2048, 2), "");
-  std::string over = imagesOverDeviceLimits(g.images, 1024, 2);
+  EXPECT_EQ(imagesOverDeviceLimits(g.images, 2048), "");
+  std::string over = imagesOverDeviceLimits(g.images, 1024);
   EXPECT_NE(over.find("earth.jpg' is 2048x1024: the device's images are at most 1024 a side (maxImageDimension2D)"),
             std::string::npos)
       << over;
-  EXPECT_NE(imagesOverDeviceLimits(g.images, 2048, 1).find("maxImageArrayLayers"), std::string::npos);
 }
 
 }  // namespace

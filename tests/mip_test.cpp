@@ -146,9 +146,9 @@ TEST(MipChain, LastLevelIsTheLinearMeanOfTheImage) {
   }
 }
 
-// buildGpuScene packs every level of every layer, level after level: two images of different
-// sizes (uv_grid.png is resampled to earth.jpg's 2048 x 1024 first) give 12 levels of 2 layers.
-TEST(MipChain, GpuScenePacksEveryLevelOfEveryLayer) {
+// buildGpuScene packs each image's own chain: level 0 as decoded, then its levels (mipChain),
+// at the image's own size (uv_grid.png is not resampled to earth.jpg's 2048 x 1024).
+TEST(MipChain, GpuScenePacksEachImagesOwnChain) {
   Scene scene = parseSceneText(
       "material a { texture = image { file = \"../textures/earth.jpg\"; }; }\n"
       "material b { texture = image { file = \"../textures/uv_grid.png\"; }; }\n"
@@ -156,29 +156,23 @@ TEST(MipChain, GpuScenePacksEveryLevelOfEveryLayer) {
       "sphere { center = (3, 0, 0); radius = 1; b; }\n",
       kSourceDir + "/scenes/mip_test.cfg");
   GpuScene g = buildGpuScene(scene, 8, 8);
-  ASSERT_EQ(g.imageLayers, 2);
-  ASSERT_EQ(g.imageWidth, 2048);
-  ASSERT_EQ(g.imageHeight, 1024);
-  ASSERT_EQ(g.imageLevels, 12);
-  EXPECT_EQ(g.imagePixels.size(), size_t(2048) * 1024 * 4 * 2);  // level 0, as before mipmaps
-
-  std::vector<std::vector<ImageRGBA8>> chains;
-  for (const char* file : {"earth.jpg", "uv_grid.png"}) {
+  ASSERT_EQ(g.imageChains.size(), 2u);
+  const int sizes[2][3] = {{2048, 1024, 12}, {512, 256, 10}};
+  const char* files[2] = {"earth.jpg", "uv_grid.png"};
+  for (size_t i = 0; i < 2; ++i) {
+    const ImageChain& chain = g.imageChains[i];
+    EXPECT_EQ(chain.width, sizes[i][0]);
+    EXPECT_EQ(chain.height, sizes[i][1]);
+    ASSERT_EQ(chain.levels, sizes[i][2]);
     ImageRGBA8 image;
     std::string error;
-    ASSERT_TRUE(loadImage(kSourceDir + "/textures/" + file, &image, &error)) << error;
-    chains.push_back(mipChain(resizeImage(image, 2048, 1024)));
+    ASSERT_TRUE(loadImage(kSourceDir + "/textures/" + files[i], &image, &error)) << error;
+    std::vector<uint8_t> expected;
+    for (const ImageRGBA8& level : mipChain(image)) expected.insert(expected.end(), level.pixels.begin(), level.pixels.end());
+    EXPECT_TRUE(expected == chain.pixels) << files[i];
+    EXPECT_EQ(g.materials[i].imageIndex, uint32_t(i) | uint32_t(sizes[i][2]) << 8);
+    EXPECT_EQ(g.materials[i].imageSize, uint32_t(sizes[i][0]) | uint32_t(sizes[i][1]) << 16);
   }
-  size_t offset = 0;
-  for (int level = 1; level < g.imageLevels; ++level)
-    for (int layer = 0; layer < 2; ++layer) {
-      const std::vector<uint8_t>& expected = chains[size_t(layer)][size_t(level)].pixels;
-      ASSERT_LE(offset + expected.size(), g.imageMipPixels.size());
-      EXPECT_TRUE(std::equal(expected.begin(), expected.end(), g.imageMipPixels.begin() + long(offset)))
-          << "level " << level << " layer " << layer;
-      offset += expected.size();
-    }
-  EXPECT_EQ(offset, g.imageMipPixels.size());
 }
 
 }  // namespace

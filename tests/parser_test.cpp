@@ -494,6 +494,18 @@ TEST(ParserErrors, Duplicates) {
             "t.cfg:2:2: duplicate ambient_light (first given at t.cfg:1:1)");
 }
 
+// wrap: repeat by default; clamp or repeat as given.
+TEST(Parser, ImageWrap) {
+  Scene s = parseSceneText("material a { texture = image { file = \"a.png\"; } }\n"
+                           "material b { texture = image { file = \"b.png\"; wrap = clamp; } }\n"
+                           "material c { texture = image { wrap = repeat; file = \"c.png\"; } }\n",
+                           "t.cfg");
+  ASSERT_EQ(s.materials.size(), 3u);
+  EXPECT_EQ(s.materials[0].texture.wrap, ImageWrap::Repeat);
+  EXPECT_EQ(s.materials[1].texture.wrap, ImageWrap::Clamp);
+  EXPECT_EQ(s.materials[2].texture.wrap, ImageWrap::Repeat);
+}
+
 TEST(ParserErrors, Textures) {
   EXPECT_EQ(errorOf("material m {\n  texture = checker {\n    file = \"x.png\";\n  }\n}\n"),
             "t.cfg:3:5: 'file' does not apply to checker textures");
@@ -508,6 +520,12 @@ TEST(ParserErrors, Textures) {
   EXPECT_EQ(errorOf("material m { texture = checkr; }"),
             "t.cfg:1:24: unknown texture kind 'checkr' (expected " + textureKindList() + ")");
   EXPECT_EQ(errorOf("material m { texture = image { } }"), "t.cfg:1:24: image texture needs 'file = \"path\";'");
+  EXPECT_EQ(errorOf("material m { texture = checker { wrap = clamp; } }"),
+            "t.cfg:1:34: 'wrap' does not apply to checker textures");
+  EXPECT_EQ(errorOf("material m { texture = image { file = \"a.png\"; wrap = mirror; } }"),
+            "t.cfg:1:55: wrap must be repeat or clamp, got 'mirror'");
+  EXPECT_EQ(errorOf("material m { texture = image { file = \"a.png\"; wrap = 1; } }"),
+            "t.cfg:1:55: wrap must be repeat or clamp, got '1'");
   EXPECT_EQ(errorOf("material m { texture = image; }"), "t.cfg:1:24: image texture needs 'file = \"path\";'");
   EXPECT_EQ(errorOf("material m { texture = image { file = \"\"; } }"), "t.cfg:1:39: empty file name");
   EXPECT_EQ(errorOf("material m { texture = image { file = a.png; } }"),

@@ -220,7 +220,7 @@ TEST_P(AlbedoTest, TextureColourMatchesDoubleReference) {
     glm::dvec3 expected;
     double tolerance = 2e-3;
     if (m.texture.kind == TextureKind::Image) {
-      expected = sampleImageReference(image, hit.tc.image, hit.tc.clampV);
+      expected = sampleImageReference(image, hit.tc);
       tolerance = 0.02;  // 8-bit texels, driver filtering precision
     } else {
       // Skip pixels within float rounding of a discontinuity (check edges, wood rings).

@@ -1,18 +1,66 @@
-// image: a picture file, bilinear at the hit (point) or averaged
-// over the footprint in its mip chain (box). Oracle: sampleImageReference (host/reference_render.h).
+// image: a picture file at its own size, bilinear at the hit (point) or averaged over the
+// footprint in its own mip chain (box). Oracle: sampleImageReference (host/reference_render.h).
 #ifndef RAYTEX_KIND_IMAGE_GLSL
 #define RAYTEX_KIND_IMAGE_GLSL
 
-// Bilinear (the sampler's filter) at tc.image: column and row, row 0 the image's top, oriented
-// by the mapping (docs/textures.md, "Image orientation"). REPEAT wraps s; on the sphere (clampV) t is
-// kept half a texel inside the image so the poles do not blend the top and bottom rows.
-vec3 imagePoint(Material m, TexCoord tc) {
-  vec2 st = tc.image;
-  if (tc.clampV) {
-    float h = float(textureSize(images, 0).y);
-    st.y = clamp(st.y, 0.5 / h, 1.0 - 0.5 / h);
+// Element `index` of BINDING_IMAGES at st (REPEAT), mip level lod. Lavapipe cannot index a
+// sampler array with a variable, so a switch picks the element by constant indices, its cases
+// past IMAGE_COUNT compiled out (one image: no switch). The only place that names `images`:
+// the filters below are written once for every image.
+#define IMAGE_CASE(i) \
+  case i:             \
+    if (uint(i) < IMAGE_COUNT) return textureLod(images[i], st, lod); \
+    break;
+vec4 sampleImage(uint index, vec2 st, float lod) {
+  if (IMAGE_COUNT <= 1u) return textureLod(images[0], st, lod);
+  switch (int(index)) {
+    IMAGE_CASE(0) IMAGE_CASE(1) IMAGE_CASE(2) IMAGE_CASE(3) IMAGE_CASE(4) IMAGE_CASE(5) IMAGE_CASE(6)
+    IMAGE_CASE(7) IMAGE_CASE(8) IMAGE_CASE(9) IMAGE_CASE(10) IMAGE_CASE(11) IMAGE_CASE(12)
+    IMAGE_CASE(13) IMAGE_CASE(14) IMAGE_CASE(15)
+    default:
+      break;
   }
-  return textureLod(images, vec3(st, float(m.imageLayer)), 0.0).rgb;
+  return vec4(0.0);
+}
+
+// An image texture as the host packed it (Material.imageIndex, imageSize): its element of
+// BINDING_IMAGES, its size in texels and mip levels, and which axes do not wrap.
+struct ImageInfo {
+  uint index;
+  vec2 size;
+  float levels;
+  bool clampS;  // wrap = clamp
+  bool clampT;  // wrap = clamp, or a sphere (its poles do not wrap into each other)
+};
+
+ImageInfo imageInfo(Material m, TexCoord tc) {
+  ImageInfo im;
+  im.index = m.imageIndex & 0xFFu;
+  im.levels = float((m.imageIndex >> 8) & 0xFFu);
+  im.size = vec2(float(m.imageSize & 0xFFFFu), float(m.imageSize >> 16));
+  im.clampS = (m.imageIndex & IMAGE_WRAP_CLAMP) != 0u;
+  im.clampT = im.clampS || tc.clampV;
+  return im;
+}
+
+// The lookup coordinate: tc.image, column and row with row 0 the image's top, oriented by the
+// mapping (docs/textures.md, "Image orientation"). wrap = clamp takes the unwrapped lookup,
+// imageTile + image, clamped to [0, 1]: the image once, its edge texels extended beyond (the
+// host packs a clamped image's offset whole, not reduced: packPlane).
+vec2 imageCoord(ImageInfo im, TexCoord tc) {
+  return im.clampS ? clamp(tc.imageTile + tc.image, 0.0, 1.0) : tc.image;
+}
+
+// st kept half a texel of a level `texels` in size inside the image along the axes that do
+// not wrap (the sampler REPEATs): CLAMP_TO_EDGE, and no blend of the sphere's two poles.
+vec2 clampToImage(ImageInfo im, vec2 st, vec2 texels) {
+  vec2 inset = mix(vec2(-1.0e30), 0.5 / texels, bvec2(im.clampS, im.clampT));
+  return clamp(st, inset, 1.0 - inset);
+}
+
+vec3 imagePoint(Material m, TexCoord tc) {
+  ImageInfo im = imageInfo(m, tc);
+  return sampleImage(im.index, clampToImage(im, imageCoord(im, tc), im.size), 0.0).rgb;
 }
 
 #ifdef RAYTEX_FILTER_BOX
@@ -34,10 +82,10 @@ const float IMAGE_SPHERE_PROBES = 32.0;
 const float IMAGE_LOD_BIAS = -0.79248125;
 
 vec3 imageBox(Material m, TexCoord tc, Footprint fp) {
-  vec2 st = tc.image;
-  float layer = float(m.imageLayer);
-  vec2 size = vec2(textureSize(images, 0).xy);
-  float maxLevel = float(textureQueryLevels(images) - 1);
+  ImageInfo im = imageInfo(m, tc);
+  vec2 st = imageCoord(im, tc);
+  vec2 size = im.size;
+  float maxLevel = im.levels - 1.0;
   float k = 1.0;         // probes
   vec2 step = vec2(0.0);  // st from one probe to the next
   float width2;           // squared width of each probe's footprint, in level-0 texels
@@ -68,7 +116,7 @@ vec3 imageBox(Material m, TexCoord tc, Footprint fp) {
     float a = dx.x * dx.x + dy.x * dy.x, b = dx.x * dx.y + dy.x * dy.y, c = dx.y * dx.y + dy.y * dy.y;
     if (!(a + c < 1.0e30)) {  // non-finite or huge (a differential ray parallel to the surface)
       if (tc.clampV) st.y = 0.5;
-      return textureLod(images, vec3(st, layer), maxLevel).rgb;
+      return sampleImage(im.index, clampToImage(im, st, max(floor(size * exp2(-maxLevel)), 1.0)), maxLevel).rgb;
     }
     float dev = sqrt(0.25 * (a - c) * (a - c) + b * b);
     float major2 = 0.5 * (a + c) + dev, minor2 = max(0.5 * (a + c) - dev, 0.0);
@@ -82,16 +130,12 @@ vec3 imageBox(Material m, TexCoord tc, Footprint fp) {
     step = axis * sqrt(major2) / (size * k);
   }
   float lod = clamp(0.5 * log2(max(width2, 1.0e-30)) + IMAGE_LOD_BIAS, 0.0, maxLevel);
-  // On the sphere t stays half a texel of the coarser of the two levels blended inside the
-  // image, so no level blends the two poles' rows. (Its height by shifting: lavapipe answers
-  // textureSize(images, lod) with one invocation's lod for the whole SIMD group.)
-  float h = float(max(int(size.y) >> int(ceil(lod)), 1));
-  vec2 tRange = tc.clampV ? vec2(0.5 / h, 1.0 - 0.5 / h) : vec2(-1.0e30, 1.0e30);
+  // Along the axes that do not wrap st stays half a texel of the coarser of the two levels
+  // blended inside the image, so no level blends the two poles' rows or wraps a clamped edge.
+  vec2 texels = vec2(max(ivec2(size) >> int(ceil(lod)), ivec2(1)));
   vec3 sum = vec3(0.0);
-  for (float i = 0.5 - 0.5 * k; i < 0.5 * k; i += 1.0) {
-    vec2 q = st + i * step;
-    sum += textureLod(images, vec3(q.x, clamp(q.y, tRange.x, tRange.y), layer), lod).rgb;
-  }
+  for (float i = 0.5 - 0.5 * k; i < 0.5 * k; i += 1.0)
+    sum += sampleImage(im.index, clampToImage(im, st + i * step, texels), lod).rgb;
   return sum / k;
 }
 #endif  // RAYTEX_FILTER_BOX

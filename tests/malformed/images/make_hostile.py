@@ -51,7 +51,14 @@ write("truncated.jpg", earth[:4096])
 indices = bytes([0, 1, 2, 3, 0, 1, 200, 255, 0, 1, 0, 1, 17, 1, 0, 1])
 rows = b"".join(b"\x00" + indices[y * 4:(y + 1) * 4] for y in range(4))
 write("palette-out-of-range.png", png(4, 4, 3, rows, plte=b"\xff\x00\x00\x00\x00\xff"))
-# One side over 16384, and a wide and a tall image that share one 16384 x 16384 array.
+# One side over 16384, and a wide and a tall image (each its own size: 128 KiB together).
 write("wide-16385.png", gray_png(16385, 1))
 write("wide-16384.png", gray_png(16384, 1))
 write("tall-16384.png", gray_png(1, 16384))
+# A 16384 x 16384 PNG's signature and IHDR chunk, then IEND (no pixel data): 1 GiB on the
+# GPU, over the default budget.
+write("header-16384.png", png(16384, 16384, 0, b"")[:8 + 25] + png(1, 1, 0, b"")[-12:])
+# MAX_IMAGES (16) distinct 1 x 1 images: a scene naming a 17th is refused before it is opened.
+os.makedirs(os.path.join(HERE, "count"), exist_ok=True)
+for i in range(1, 17):
+    write(os.path.join("count", "%02d.png" % i), gray_png(1, 1))
