@@ -1,6 +1,6 @@
 #include "gpu_scene.h"
 
-#include "mapping.h"
+#include "plane_frame.h"
 #include "noise_permutation.h"
 #include "scene_limits.h"
 #include "texture_kinds.h"
