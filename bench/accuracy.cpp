@@ -66,7 +66,10 @@ int main(int argc, char** argv) {
       uploadScene(r, g);
       for (const Method& m : methods) {
         for (uint32_t side : sides) {
-          preparePipeline(r, {g.shape, OUTPUT_SHADED, m.filter, side});
+          KernelOptions kernel;
+          kernel.filterBox = m.filter == FILTER_BOX;
+          kernel.samplesPerSide = side;
+          preparePipeline(r, kernelKey(g, kernel));
           renderFrame(r);  // warm-up: lavapipe compiles at the first dispatch
           std::vector<double> ms;
           for (int i = 0; i < runs; ++i) {

@@ -29,7 +29,11 @@ int main(int argc, char** argv) {
     GpuScene scene = buildGpuScene(parseSceneFile(argv[1]), width, height);
     createRenderer(r, {});
     uploadScene(r, scene);
-    preparePipeline(r, {scene.shape, OUTPUT_SHADED, filter, side, 0, baked ? bakeScene(scene) : BakedScene{}});
+    KernelOptions kernel;
+    kernel.filterBox = filter == FILTER_BOX;
+    kernel.samplesPerSide = side;
+    kernel.bakeValues = baked;
+    preparePipeline(r, kernelKey(scene, kernel));
     renderFrame(r);
     for (int i = 0; i < frames; ++i) renderFrame(r);
   } catch (const std::exception& e) {

@@ -30,7 +30,10 @@ int main(int argc, char** argv) {
     uploadScene(r, g);
     printf("%s %ux%u, median of %d warm frames\n", args.scene.c_str(), width, height, runs);
     for (const Method& m : methods) {
-      preparePipeline(r, {g.shape, OUTPUT_SHADED, m.filter, m.samplesPerSide});
+      KernelOptions kernel;
+      kernel.filterBox = m.filter == FILTER_BOX;
+      kernel.samplesPerSide = m.samplesPerSide;
+      preparePipeline(r, kernelKey(g, kernel));
       renderFrame(r);  // warm-up: lavapipe compiles at the first dispatch
       std::vector<double> ms;
       for (int i = 0; i < runs; ++i) {

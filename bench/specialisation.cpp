@@ -53,7 +53,10 @@ int main(int argc, char** argv) {
         createRenderer(r, {});
         uploadScene(r, gpuScene);
         Clock::time_point t = Clock::now();
-        preparePipeline(r, {v.shape, OUTPUT_SHADED, FILTER_POINT, 1, 0, v.baked});
+        KernelKey key = kernelKey(gpuScene, KernelOptions{});
+        key.shape = v.shape;
+        key.baked = v.baked;
+        preparePipeline(r, key);
         create.push_back(msSince(t));
         t = Clock::now();
         renderFrame(r);  // lavapipe finishes compiling at the first dispatch

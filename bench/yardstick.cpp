@@ -192,14 +192,17 @@ std::string sphereMaterial(const std::string& text, const std::string& material,
 struct RaytexCase {
   std::string name;
   GpuScene scene;
-  PipelineKey key;
+  KernelKey key;
 };
 
 RaytexCase raytexCase(const std::string& name, const std::string& text, const std::string& path, uint32_t width,
                       uint32_t height, uint32_t samplesPerSide) {
   GpuScene scene = buildGpuScene(parseSceneText(text, path), width, height);
   // As raytex render builds it: around the scene's values.
-  PipelineKey key{scene.shape, OUTPUT_SHADED, FILTER_POINT, samplesPerSide, 0, bakeScene(scene)};
+  KernelOptions kernel;
+  kernel.samplesPerSide = samplesPerSide;
+  kernel.bakeValues = true;
+  KernelKey key = kernelKey(scene, kernel);
   return {name, std::move(scene), key};
 }
 

@@ -45,40 +45,6 @@ gpu::Material packMaterial(const Material& m, const std::vector<SceneImage>& ima
 }
 }  // namespace
 
-SceneShape sceneShape(const Scene& scene) {
-  Material fallback = defaultMaterial();
-  auto kindBit = [&](int m) { return 1u << uint32_t(materialAt(scene, m, fallback).texture.kind); };
-  auto count = [](size_t n) { return n <= MAX_SPECIALISED_COUNT ? uint32_t(n) : COUNT_FROM_FRAME; };
-  std::vector<std::string> images;  // distinct image files, as probeSceneImages counts them
-  auto noteImage = [&](int m) {
-    const TextureDesc& t = materialAt(scene, m, fallback).texture;
-    if (t.kind == TextureKind::Image && std::find(images.begin(), images.end(), t.imagePath) == images.end())
-      images.push_back(t.imagePath);
-  };
-  SceneShape shape;
-  shape.sphereKinds = shape.planeKinds = 0;
-  for (const Sphere& s : scene.spheres) {
-    shape.sphereKinds |= kindBit(s.material);
-    noteImage(s.material);
-  }
-  for (const Plane& p : scene.planes) {
-    shape.planeKinds |= kindBit(p.material);
-    noteImage(p.material);
-  }
-  shape.imageCount = uint32_t(std::min<size_t>(images.size(), MAX_IMAGES));
-  shape.sphereCount = count(scene.spheres.size());
-  shape.planeCount = count(scene.planes.size());
-  shape.lightCount = count(scene.lights.size());
-  // A plane's tex_scale and tex_offset, and its turn of (u, v) and the image, are folded into
-  // what it packs anyway; its turned solid coordinate and a sphere's placement are not.
-  const TexturePlacement none;
-  shape.placed = 0;
-  for (const Sphere& s : scene.spheres)
-    shape.placed |= s.placement.rotate != none.rotate || s.placement.scale != none.scale ||
-                    s.placement.offset != none.offset;
-  for (const Plane& p : scene.planes) shape.placed |= p.placement.rotate != none.rotate;
-  return shape;
-}
 
 gpu::Frame cameraFrame(const Camera& camera, uint32_t width, uint32_t height) {
   glm::dvec3 forward = glm::normalize(camera.lookat - camera.eye);
@@ -291,25 +257,4 @@ GpuScene buildGpuScene(const Scene& scene, uint32_t width, uint32_t height, cons
 
   fillImageChains(g, options.mipmaps);
   return g;
-}
-
-BakedScene bakeScene(const GpuScene& g) {
-  BakedScene baked;
-  const SceneShape& shape = g.shape;
-  if (shape.sphereCount == COUNT_FROM_FRAME || shape.planeCount == COUNT_FROM_FRAME ||
-      shape.lightCount == COUNT_FROM_FRAME || g.spheres.size() > MAX_BAKED_SPHERES ||
-      g.planes.size() > MAX_BAKED_PLANES || g.lights.size() > MAX_BAKED_LIGHTS || g.materials.empty() ||
-      g.materials.size() > MAX_BAKED_MATERIALS)
-    return baked;
-  auto put = [&](uint32_t word, uint32_t stride, const auto& items) {
-    for (size_t k = 0; k < items.size(); ++k)
-      std::memcpy(baked.words.data() + word + k * stride, &items[k], sizeof(items[k]));
-  };
-  put(BAKED_SPHERE_WORD, BAKED_SPHERE_STRIDE, g.spheres);
-  put(BAKED_PLANE_WORD, BAKED_PLANE_STRIDE, g.planes);
-  put(BAKED_LIGHT_WORD, BAKED_LIGHT_STRIDE, g.lights);
-  put(BAKED_MATERIAL_WORD, BAKED_MATERIAL_STRIDE, g.materials);
-  baked.enabled = 1;
-  baked.materialCount = uint32_t(g.materials.size());
-  return baked;
 }

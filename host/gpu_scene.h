@@ -4,6 +4,7 @@
 
 #include "common.h"
 #include "image_io.h"
+#include "kernel_key.h"
 #include "scene.h"
 #include "scene_images.h"
 
@@ -11,35 +12,6 @@
 #include <cstdint>
 #include <map>
 #include <vector>
-
-// What a trace kernel is specialised to in a scene (the scene's SPEC_* constants of common.h).
-// The defaults are the unspecialised kernel: every kind, counts read from Frame.
-struct SceneShape {
-  uint32_t sphereKinds = ~0u;  // bit (1 << TEX_*) per kind on a sphere
-  uint32_t planeKinds = ~0u;   // ... on a plane
-  uint32_t sphereCount = COUNT_FROM_FRAME;  // the count if at most MAX_SPECIALISED_COUNT
-  uint32_t planeCount = COUNT_FROM_FRAME;
-  uint32_t lightCount = COUNT_FROM_FRAME;
-  uint32_t placed = 1;  // SPEC_TEXTURE_PLACEMENT (a VkBool32): an object's placement needs the kernel's
-  uint32_t imageCount = MAX_IMAGES;  // image files the objects use (SPEC_IMAGE_COUNT)
-  uint32_t kinds() const { return sphereKinds | planeKinds; }
-  bool operator==(const SceneShape& o) const {
-    return sphereKinds == o.sphereKinds && planeKinds == o.planeKinds && sphereCount == o.sphereCount &&
-           planeCount == o.planeCount && lightCount == o.lightCount && placed == o.placed &&
-           imageCount == o.imageCount;
-  }
-};
-
-// A scene's spheres, planes, lights and materials as the words of SPEC_BAKED_WORDS (laid out as
-// the uniform blocks' structs, common.h), for a kernel with their values built in.
-struct BakedScene {
-  uint32_t enabled = 0;        // SPEC_BAKED (a VkBool32)
-  uint32_t materialCount = 1;  // SPEC_BAKED_MATERIAL_COUNT
-  std::array<uint32_t, BAKED_WORD_COUNT> words{};
-  bool operator==(const BakedScene& o) const {
-    return enabled == o.enabled && materialCount == o.materialCount && words == o.words;
-  }
-};
 
 // One image file's texels as uploaded: RGBA8 sRGB, level 0 (width x height) first, then its
 // levels 1.. of the full mip chain when it has them (mipChain in image_io.h: level l is
@@ -89,13 +61,3 @@ void packCamera(GpuScene& gpuScene, const Scene& scene, uint32_t width, uint32_t
 // The camera as the kernel sees it: eye at the origin (camera-relative), axes scaled by the
 // field of view and aspect. Used by packCamera; exposed for its tests.
 gpu::Frame cameraFrame(const Camera& camera, uint32_t width, uint32_t height);
-
-// The scene's kinds per shape (kinds(): all in use) and its counts (those over
-// MAX_SPECIALISED_COUNT: COUNT_FROM_FRAME); the image files its objects use (at most
-// MAX_IMAGES: buildGpuScene refuses more).
-SceneShape sceneShape(const Scene& scene);
-
-// The scene's values for a kernel built around them; not enabled if it has more than
-// MAX_BAKED_* spheres, planes, lights or materials (or none of a kind of object: the kernel
-// then keeps its one empty slot) or counts that are not specialised.
-BakedScene bakeScene(const GpuScene& gpuScene);

@@ -81,8 +81,12 @@ int renderHeadless(const RenderOptions& options, uint32_t extraFrames, HeadlessR
     uploadScene(renderer, gpuScene);
     times.upload = lapMs(t);
     // The camera is fixed: the kernel is built around the scene's values where it is small.
-    preparePipeline(renderer, {gpuScene.shape, OUTPUT_SHADED, uint32_t(job.filterBox ? FILTER_BOX : FILTER_POINT),
-                               job.samplesPerSide, perSample, bakeScene(gpuScene)});
+    KernelOptions kernel;
+    kernel.filterBox = job.filterBox;
+    kernel.samplesPerSide = job.samplesPerSide;
+    kernel.progressive = perSample;
+    kernel.bakeValues = true;
+    preparePipeline(renderer, kernelKey(gpuScene, kernel));
     times.pipeline = lapMs(t);
     auto renderBand = [&](uint32_t firstRow) {  // one band of the image; its GPU time
       selectBand(renderer, firstRow);

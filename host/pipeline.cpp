@@ -61,7 +61,7 @@ VkPipeline createComputePipeline(const Device& device, VkPipelineLayout layout, 
   return pipeline;
 }
 
-VkPipeline createTracePipeline(const Device& device, VkPipelineLayout layout, const PipelineKey& key) {
+VkPipeline createTracePipeline(const Device& device, VkPipelineLayout layout, const KernelKey& key) {
   // The build variant: debug outputs, or the shaded image with point or box textures.
   const uint32_t* code = trace_point_spv;
   size_t bytes = sizeof(trace_point_spv);
@@ -74,25 +74,25 @@ VkPipeline createTracePipeline(const Device& device, VkPipelineLayout layout, co
   }
 
   std::vector<VkSpecializationMapEntry> entries = {
-      {SPEC_SPHERE_TEXTURE_KINDS, offsetof(PipelineKey, shape.sphereKinds), sizeof(uint32_t)},
-      {SPEC_PLANE_TEXTURE_KINDS, offsetof(PipelineKey, shape.planeKinds), sizeof(uint32_t)},
-      {SPEC_SPHERE_COUNT, offsetof(PipelineKey, shape.sphereCount), sizeof(uint32_t)},
-      {SPEC_PLANE_COUNT, offsetof(PipelineKey, shape.planeCount), sizeof(uint32_t)},
-      {SPEC_LIGHT_COUNT, offsetof(PipelineKey, shape.lightCount), sizeof(uint32_t)},
-      {SPEC_TEXTURE_PLACEMENT, offsetof(PipelineKey, shape.placed), sizeof(VkBool32)},
-      {SPEC_IMAGE_COUNT, offsetof(PipelineKey, shape.imageCount), sizeof(uint32_t)},
-      {SPEC_OUTPUT_MODE, offsetof(PipelineKey, outputMode), sizeof(uint32_t)},
-      {SPEC_SAMPLES_PER_SIDE, offsetof(PipelineKey, samplesPerSide), sizeof(uint32_t)},
-      {SPEC_PROGRESSIVE, offsetof(PipelineKey, progressive), sizeof(VkBool32)},
-      {SPEC_BAKED, offsetof(PipelineKey, baked.enabled), sizeof(VkBool32)},
-      {SPEC_BAKED_MATERIAL_COUNT, offsetof(PipelineKey, baked.materialCount), sizeof(uint32_t)},
+      {SPEC_SPHERE_TEXTURE_KINDS, offsetof(KernelKey, shape.sphereKinds), sizeof(uint32_t)},
+      {SPEC_PLANE_TEXTURE_KINDS, offsetof(KernelKey, shape.planeKinds), sizeof(uint32_t)},
+      {SPEC_SPHERE_COUNT, offsetof(KernelKey, shape.sphereCount), sizeof(uint32_t)},
+      {SPEC_PLANE_COUNT, offsetof(KernelKey, shape.planeCount), sizeof(uint32_t)},
+      {SPEC_LIGHT_COUNT, offsetof(KernelKey, shape.lightCount), sizeof(uint32_t)},
+      {SPEC_TEXTURE_PLACEMENT, offsetof(KernelKey, shape.placed), sizeof(VkBool32)},
+      {SPEC_IMAGE_COUNT, offsetof(KernelKey, shape.imageCount), sizeof(uint32_t)},
+      {SPEC_OUTPUT_MODE, offsetof(KernelKey, outputMode), sizeof(uint32_t)},
+      {SPEC_SAMPLES_PER_SIDE, offsetof(KernelKey, samplesPerSide), sizeof(uint32_t)},
+      {SPEC_PROGRESSIVE, offsetof(KernelKey, progressive), sizeof(VkBool32)},
+      {SPEC_BAKED, offsetof(KernelKey, baked.enabled), sizeof(VkBool32)},
+      {SPEC_BAKED_MATERIAL_COUNT, offsetof(KernelKey, baked.materialCount), sizeof(uint32_t)},
   };
   for (uint32_t i = 0; key.baked.enabled && i < BAKED_WORD_COUNT; ++i)
-    entries.push_back({SPEC_BAKED_WORDS + i, uint32_t(offsetof(PipelineKey, baked.words) + 4 * i), sizeof(uint32_t)});
+    entries.push_back({SPEC_BAKED_WORDS + i, uint32_t(offsetof(KernelKey, baked.words) + 4 * i), sizeof(uint32_t)});
   VkSpecializationInfo specialization{};
   specialization.mapEntryCount = uint32_t(entries.size());
   specialization.pMapEntries = entries.data();
-  specialization.dataSize = sizeof(PipelineKey);
+  specialization.dataSize = sizeof(KernelKey);
   specialization.pData = &key;
   // warmPipeline dispatches past the image: the base needs VK_PIPELINE_CREATE_DISPATCH_BASE_BIT.
   return createComputePipeline(device, layout, code, bytes, &specialization, VK_PIPELINE_CREATE_DISPATCH_BASE_BIT);

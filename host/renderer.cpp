@@ -259,7 +259,7 @@ void updateSceneBuffers(Renderer& r, const GpuScene& s) {
 
 namespace {
 
-CachedPipeline& cachedPipeline(Renderer& r, const PipelineKey& key) {
+CachedPipeline& cachedPipeline(Renderer& r, const KernelKey& key) {
   for (CachedPipeline& p : r.pipelines)
     if (p.key == key) return p;
   r.pipelines.push_back({key, createTracePipeline(r.device, r.pipelineLayout, key), false});
@@ -276,19 +276,19 @@ void bindAndDispatch(Renderer& r, VkCommandBuffer cmd, VkPipeline pipeline, uint
 
 }  // namespace
 
-void preparePipeline(Renderer& r, const PipelineKey& key) {
+void preparePipeline(Renderer& r, const KernelKey& key) {
   if (r.pipeline && r.pipelineKey == key) return;
   r.pipeline = cachedPipeline(r, key).pipeline;
   r.pipelineKey = key;
 }
 
-bool pipelineWarm(const Renderer& r, const PipelineKey& key) {
+bool pipelineWarm(const Renderer& r, const KernelKey& key) {
   for (const CachedPipeline& p : r.pipelines)
     if (p.key == key) return p.dispatched;
   return false;
 }
 
-void warmPipeline(Renderer& r, const PipelineKey& key) {
+void warmPipeline(Renderer& r, const KernelKey& key) {
   CachedPipeline& p = cachedPipeline(r, key);
   if (p.dispatched) return;
   // One workgroup past the image's right edge: every invocation returns at once, nothing is

@@ -11,7 +11,7 @@
 #include <vector>
 
 struct CachedPipeline {
-  PipelineKey key;
+  KernelKey key;
   VkPipeline pipeline = VK_NULL_HANDLE;
   bool dispatched = false;  // lavapipe compiles to machine code at the first dispatch
 };
@@ -24,7 +24,7 @@ struct Renderer {
   VkDescriptorSet descriptorSet = VK_NULL_HANDLE;
   VkSampler sampler = VK_NULL_HANDLE;
   VkPipeline pipeline = VK_NULL_HANDLE;  // the current one, from `pipelines`
-  PipelineKey pipelineKey;
+  KernelKey pipelineKey;
   std::vector<CachedPipeline> pipelines;  // every one created, kept for switching back
 
   Buffer frame, spheres, planes, materials, lights, noise;
@@ -59,14 +59,14 @@ void uploadScene(Renderer& renderer, const GpuScene& scene);
 void updateSceneBuffers(Renderer& renderer, const GpuScene& scene);
 
 // Makes the pipeline specialised to `key` the current one, creating it unless created before.
-void preparePipeline(Renderer& renderer, const PipelineKey& key);
+void preparePipeline(Renderer& renderer, const KernelKey& key);
 
 // Whether the pipeline for `key` exists and has run (lavapipe compiles at the first dispatch).
-bool pipelineWarm(const Renderer& renderer, const PipelineKey& key);
+bool pipelineWarm(const Renderer& renderer, const KernelKey& key);
 
 // Creates the pipeline for `key` and dispatches it once over no pixels, so that a later switch
 // to it costs nothing; the current pipeline and the image stay as they were. Waits.
-void warmPipeline(Renderer& renderer, const PipelineKey& key);
+void warmPipeline(Renderer& renderer, const KernelKey& key);
 
 // How many bands of bandRows rows the image takes (1 unless over maxStorageBufferRange).
 uint32_t bandCount(const Renderer& renderer);

@@ -247,18 +247,24 @@ std::string title(const ViewerState& state, uint32_t samples, uint32_t target, d
   return t;
 }
 
-// The pipeline that renders `scene` progressively with the job's settings. Every material is
-// packed, so an object's image may be any of the `packedImages` elements of BINDING_IMAGES.
-PipelineKey viewerKey(const Scene& scene, const RenderJob& job, size_t packedImages) {
-  SceneShape shape = sceneShape(scene);
-  if (shape.imageCount > 0) shape.imageCount = uint32_t(packedImages);
-  return {shape, OUTPUT_SHADED, uint32_t(job.filterBox ? FILTER_BOX : FILTER_POINT), job.samplesPerSide, 1};
+// The pipeline that renders `scene` (its objects' materials as switched) progressively with the
+// job's settings. Every material is packed, so an object's image may be any of the packed
+// scene's elements of BINDING_IMAGES.
+KernelKey viewerKey(const GpuScene& packed, const Scene& scene, const RenderJob& job) {
+  KernelOptions options;
+  options.filterBox = job.filterBox;
+  options.samplesPerSide = job.samplesPerSide;
+  options.progressive = true;
+  KernelKey key = kernelKey(packed, options);
+  key.shape = sceneShape(scene);
+  if (key.shape.imageCount > 0) key.shape.imageCount = uint32_t(packed.images.size());
+  return key;
 }
 
 // A pipeline a key could need next that has not run yet: the course materials on the sphere,
 // then on the plane. False when all are ready.
-bool nextPipelineToWarm(const ViewerState& state, const Renderer& renderer, const RenderJob& job, size_t packedImages,
-                        PipelineKey* key) {
+bool nextPipelineToWarm(const ViewerState& state, const Renderer& renderer, const RenderJob& job,
+                        const GpuScene& packed, KernelKey* key) {
   for (int onPlane = 0; onPlane < 2; ++onPlane)
     for (const char* name : kCourseMaterials) {
       int index = materialIndex(state.scene, name);
@@ -268,7 +274,7 @@ bool nextPipelineToWarm(const ViewerState& state, const Renderer& renderer, cons
         for (Plane& p : switched.planes) p.material = index;
       else
         for (Sphere& s : switched.spheres) s.material = index;
-      *key = viewerKey(switched, job, packedImages);
+      *key = viewerKey(packed, switched, job);
       if (!pipelineWarm(renderer, *key)) return true;
     }
   return false;
@@ -353,10 +359,10 @@ int runViewer(const RenderOptions& options) {
     std::vector<std::filesystem::file_time_type> times = fileTimes(state.scene);
     while (!glfwWindowShouldClose(window.window)) {
       bool busy = samples < target || state.dirty || state.cameraMoved || state.refresh || state.screenshot;
-      PipelineKey warm;
+      KernelKey warm;
       if (busy || options.frames) {
         glfwPollEvents();
-      } else if (nextPipelineToWarm(state, renderer, job, gpuScene.images.size(), &warm)) {
+      } else if (nextPipelineToWarm(state, renderer, job, gpuScene, &warm)) {
         // Idle: compile what a key may need next, so that the switch shows on the next frame.
         warmPipeline(renderer, warm);
         glfwPollEvents();
@@ -394,7 +400,7 @@ int runViewer(const RenderOptions& options) {
       if (options.frames && samples == target) samples = 0;  // --frames: keep rendering
       bool render = samples < target;
       if (render) {
-        preparePipeline(renderer, viewerKey(state.scene, job, gpuScene.images.size()));
+        preparePipeline(renderer, viewerKey(gpuScene, state.scene, job));
         renderSample(renderer, samples++);
         stats.gpuMs.push_back(renderer.lastFrameMs);
       }

@@ -40,8 +40,15 @@ class RenderTest : public ::testing::Test {
                             const BakedScene* bakedScene = nullptr) {
     GpuScene gpuScene = buildGpuScene(scene, width, height);
     uploadScene(*renderer_, gpuScene);
-    BakedScene values = bakedScene ? *bakedScene : baked ? bakeScene(gpuScene) : BakedScene{};
-    preparePipeline(*renderer_, {shape ? *shape : gpuScene.shape, mode, filter, samplesPerSide, 0, values});
+    KernelOptions kernel;
+    kernel.outputMode = mode;
+    kernel.filterBox = filter == FILTER_BOX;
+    kernel.samplesPerSide = samplesPerSide;
+    kernel.bakeValues = baked;
+    KernelKey key = kernelKey(gpuScene, kernel);
+    if (shape) key.shape = *shape;
+    if (bakedScene) key.baked = *bakedScene;
+    preparePipeline(*renderer_, key);
     renderFrame(*renderer_);
     readbackFrame(*renderer_);
     const float* pixels = framePixels(*renderer_);

@@ -312,3 +312,28 @@ TEST(GpuScene, AllMaterialsPacksUnusedOnesButSpecialisesToTheUsed) {
   EXPECT_EQ(all.imageChains.size(), 1u);  // anImage's earth.jpg, ready for a switch
   EXPECT_EQ(used.imageChains.size(), 0u);
 }
+
+// One function builds every kernel's key: the scene's shape, the render's options by name, and
+// the scene's values only when asked for.
+TEST(KernelKey, BuiltFromTheSceneAndTheOptions) {
+  Scene scene = parseSceneText("sphere { radius = 1; }\nplane { normal = (0, 1, 0); distance = -1; }\n"
+                               "light { position = (0, 5, 0); }\n",
+                               "key.cfg");
+  GpuScene g = buildGpuScene(scene, 8, 8);
+  KernelOptions options;
+  options.filterBox = true;
+  options.samplesPerSide = 3;
+  options.progressive = true;
+  KernelKey key = kernelKey(g, options);
+  EXPECT_EQ(key.shape, g.shape);
+  EXPECT_EQ(key.textureFilter, uint32_t(FILTER_BOX));
+  EXPECT_EQ(key.samplesPerSide, 3u);
+  EXPECT_EQ(key.progressive, 1u);
+  EXPECT_EQ(key.outputMode, uint32_t(OUTPUT_SHADED));
+  EXPECT_EQ(key.baked.enabled, 0u);
+  options.bakeValues = true;
+  KernelKey baked = kernelKey(g, options);
+  EXPECT_EQ(baked.baked, bakeScene(g));
+  EXPECT_EQ(baked.baked.enabled, 1u);
+  EXPECT_FALSE(baked == key);
+}

@@ -37,7 +37,11 @@ class ProgressiveTest : public RenderTest {
     renderer_->accumulate = true;
     GpuScene gpuScene = buildGpuScene(scene, kWidth, kHeight);
     uploadScene(*renderer_, gpuScene);
-    preparePipeline(*renderer_, {gpuScene.shape, OUTPUT_SHADED, filter, n, 1});
+    KernelOptions kernel;
+    kernel.filterBox = filter == FILTER_BOX;
+    kernel.samplesPerSide = n;
+    kernel.progressive = true;
+    preparePipeline(*renderer_, kernelKey(gpuScene, kernel));
     std::vector<float> image;
     for (uint32_t i = 0; i < n * n; ++i) {
       renderSample(*renderer_, i);

@@ -32,7 +32,9 @@ Renderer& sharedRenderer() {
 
 // Renders the uploaded scene with `filter`; aborts on the first non-finite channel.
 void renderFinite(Renderer& renderer, uint32_t filter, const std::string& text) {
-  preparePipeline(renderer, {SceneShape{}, OUTPUT_SHADED, filter, 1, 0, BakedScene{}});
+  KernelKey key;  // the unspecialised kernel: every kind, counts read at run time
+  key.textureFilter = filter;
+  preparePipeline(renderer, key);
   renderFrame(renderer);
   readbackFrame(renderer);
   const float* pixels = framePixels(renderer);

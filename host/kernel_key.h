@@ -1,0 +1,77 @@
+// What a trace kernel is built for: every specialisation constant (SPEC_* in shaders/common.h)
+// by name, in one key made by one function from a packed scene and the render's options. The
+// pipeline cache (renderer.cpp) is keyed on it and createTracePipeline (pipeline.cpp) maps its
+// fields to the constants. No Vulkan.
+#pragma once
+
+#include "common.h"
+#include "scene.h"
+
+#include <array>
+#include <cstdint>
+
+struct GpuScene;
+
+// What a trace kernel is specialised to in a scene (the scene's SPEC_* constants of common.h).
+// The defaults are the unspecialised kernel: every kind, counts read from Frame.
+struct SceneShape {
+  uint32_t sphereKinds = ~0u;  // bit (1 << TEX_*) per kind on a sphere
+  uint32_t planeKinds = ~0u;   // ... on a plane
+  uint32_t sphereCount = COUNT_FROM_FRAME;  // the count if at most MAX_SPECIALISED_COUNT
+  uint32_t planeCount = COUNT_FROM_FRAME;
+  uint32_t lightCount = COUNT_FROM_FRAME;
+  uint32_t placed = 1;  // SPEC_TEXTURE_PLACEMENT (a VkBool32): an object's placement needs the kernel's
+  uint32_t imageCount = MAX_IMAGES;  // image files the objects use (SPEC_IMAGE_COUNT)
+  uint32_t kinds() const { return sphereKinds | planeKinds; }
+  bool operator==(const SceneShape& o) const {
+    return sphereKinds == o.sphereKinds && planeKinds == o.planeKinds && sphereCount == o.sphereCount &&
+           planeCount == o.planeCount && lightCount == o.lightCount && placed == o.placed &&
+           imageCount == o.imageCount;
+  }
+};
+
+// A scene's spheres, planes, lights and materials as the words of SPEC_BAKED_WORDS (laid out as
+// the uniform blocks' structs, common.h), for a kernel with their values built in.
+struct BakedScene {
+  uint32_t enabled = 0;        // SPEC_BAKED (a VkBool32)
+  uint32_t materialCount = 1;  // SPEC_BAKED_MATERIAL_COUNT
+  std::array<uint32_t, BAKED_WORD_COUNT> words{};
+  bool operator==(const BakedScene& o) const {
+    return enabled == o.enabled && materialCount == o.materialCount && words == o.words;
+  }
+};
+
+// The render's side of the key.
+struct KernelOptions {
+  uint32_t outputMode = OUTPUT_SHADED;  // OUTPUT_*: the debug outputs use their own build variant
+  bool filterBox = false;               // textures filtered over footprints (FILTER_BOX)
+  uint32_t samplesPerSide = 1;          // N x N samples per pixel
+  bool progressive = false;             // one sample per dispatch, accumulated (the viewer)
+  bool bakeValues = false;              // the scene's values built in, where they fit (a fixed camera)
+};
+
+struct KernelKey {
+  SceneShape shape;              // kinds per shape (absent ones compiled out), counts, images
+  uint32_t outputMode = OUTPUT_SHADED;  // SPEC_OUTPUT_MODE
+  uint32_t textureFilter = FILTER_POINT;  // FILTER_*: selects the kernel's build variant
+  uint32_t samplesPerSide = 1;   // SPEC_SAMPLES_PER_SIDE
+  uint32_t progressive = 0;      // SPEC_PROGRESSIVE (a VkBool32)
+  BakedScene baked;              // SPEC_BAKED and the words, when options.bakeValues
+  bool operator==(const KernelKey& o) const {
+    return shape == o.shape && outputMode == o.outputMode && textureFilter == o.textureFilter &&
+           samplesPerSide == o.samplesPerSide && progressive == o.progressive && baked == o.baked;
+  }
+};
+
+// The key of the kernel that renders `scene` with `options`.
+KernelKey kernelKey(const GpuScene& scene, const KernelOptions& options);
+
+// The scene's kinds per shape (kinds(): all in use) and its counts (those over
+// MAX_SPECIALISED_COUNT: COUNT_FROM_FRAME); the image files its objects use (at most
+// MAX_IMAGES: buildGpuScene refuses more); whether any object's placement needs the kernel.
+SceneShape sceneShape(const Scene& scene);
+
+// The scene's values for a kernel built around them; not enabled if it has more than
+// MAX_BAKED_* spheres, planes, lights or materials (or none of a kind of object: the kernel
+// then keeps its one empty slot) or counts that are not specialised.
+BakedScene bakeScene(const GpuScene& gpuScene);
