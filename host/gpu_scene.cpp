@@ -76,7 +76,7 @@ double solidPeriod(const TextureDesc& t) {
 // x clamped to +-TEXCOORD_LIMIT, as the kernel clamps its coordinates.
 double clampTexCoord(double x) { return std::clamp(x, -TEXCOORD_LIMIT, TEXCOORD_LIMIT); }
 
-// An image texture with wrap = clamp: the kernel needs the tile index itself, not its parity.
+// An image texture with wrap = clamp: the kernel needs the whole image offset, not its fraction.
 bool imageClamped(const TextureDesc& t) { return t.kind == TextureKind::Image && t.wrap == ImageWrap::Clamp; }
 
 // tex_scale as the kernel divides by it: a normal float (a subnormal may be flushed to 0).
@@ -88,9 +88,6 @@ glm::dvec3 reduceSolid(glm::dvec3 x, const TextureDesc& texture) {
   if (period > 0.0) x = glm::dvec3(reduceModulo(x.x, period), reduceModulo(x.y, period), reduceModulo(x.z, period));
   return glm::dvec3(clampTexCoord(x.x), clampTexCoord(x.y), clampTexCoord(x.z));
 }
-
-// Kinds that read the 2D coordinate (u, v) (their rows in texture_kinds.cpp); the others the solid one.
-bool readsUv(TextureKind kind) { return kind != TextureKind::None && !isSolidTexture(kind); }
 
 // tex_rotate's R = Rz Ry Rx (degrees about the fixed axes, x first) as a unit quaternion.
 glm::dquat placementQuaternion(glm::dvec3 degrees) {

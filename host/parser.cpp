@@ -298,7 +298,7 @@ class Parser {
   // A 2D kind reads (u, v) alone: a third offset component would be silently ignored.
   void checkOffset(const TexturePlacement& place, int material, const FileLoc& offsetLoc) {
     TextureKind kind = material < 0 ? TextureKind::None : st_.scene.materials[size_t(material)].texture.kind;
-    if (place.offset.z != 0.0 && kind != TextureKind::None && !isSolidTexture(kind))
+    if (place.offset.z != 0.0 && readsUv(kind))
       fail(offsetLoc, std::string("tex_offset's third component must be 0 on a ") + textureKindName(kind) +
                           " texture (it offsets (u, v) only)");
   }
@@ -411,8 +411,10 @@ class Parser {
       Seen seen;
       block(where, [&](const Token& key) {
         const TextureKey* k = findKindKey(*info, key.text);
-        if (!k && !findTextureKey(key.text)) failPlacementKey(key, where);
-        if (!k && !findTextureKey(key.text)) fail(key.loc, "unknown key " + quote(key.text) + " in " + where);
+        if (!k && !findTextureKey(key.text)) {
+          failPlacementKey(key, where);
+          fail(key.loc, "unknown key " + quote(key.text) + " in " + where);
+        }
         if (!k) fail(key.loc, "'" + key.text + "' does not apply to " + info->name + " textures");
         assign(key, seen, where);
         textureValue(*k, &t);

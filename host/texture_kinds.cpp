@@ -118,6 +118,14 @@ std::vector<TextureKindInfo> makeKinds() {
   };
 }
 
+// "a, b or c".
+std::string listWithOr(const std::vector<const char*>& items) {
+  std::string text;
+  for (size_t i = 0; i < items.size(); ++i)
+    text += (i == 0 ? "" : i + 1 == items.size() ? " or " : ", ") + std::string(items[i]);
+  return text;
+}
+
 std::string number(double v) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%g", v);
@@ -195,6 +203,8 @@ TextureDesc defaultTexture(TextureKind kind) {
 
 bool isSolidTexture(TextureKind kind) { return kind != TextureKind::None && textureKindInfo(kind).solid; }
 
+bool readsUv(TextureKind kind) { return kind != TextureKind::None && !textureKindInfo(kind).solid; }
+
 const char* textureKindName(TextureKind kind) {
   for (const TextureKindInfo& info : textureKinds())
     if (info.kind == kind) return info.name;
@@ -202,11 +212,9 @@ const char* textureKindName(TextureKind kind) {
 }
 
 std::string textureKindList() {
-  std::string list;
-  const auto& kinds = textureKinds();
-  for (size_t i = 0; i < kinds.size(); ++i)
-    list += (i == 0 ? "" : i + 1 == kinds.size() ? " or " : ", ") + std::string(kinds[i].name);
-  return list;
+  std::vector<const char*> names;
+  for (const TextureKindInfo& info : textureKinds()) names.push_back(info.name);
+  return listWithOr(names);
 }
 
 std::string describeRange(const KeyRange& r) {
@@ -217,12 +225,7 @@ std::string describeRange(const KeyRange& r) {
   return lo.empty() ? hi : hi.empty() ? lo : lo + " and " + hi;
 }
 
-std::string describeWords(const TextureKey& key) {
-  std::string text;
-  for (size_t i = 0; i < key.words.size(); ++i)
-    text += (i == 0 ? "" : i + 1 == key.words.size() ? " or " : ", ") + std::string(key.words[i]);
-  return text;
-}
+std::string describeWords(const TextureKey& key) { return listWithOr(key.words); }
 
 bool inRange(const KeyRange& r, double v) {
   bool aboveLo = r.loOpen ? v > r.lo : v >= r.lo;

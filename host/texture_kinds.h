@@ -76,6 +76,9 @@ TextureDesc defaultTexture(TextureKind kind);
 // Whether the kind reads the 3D solid coordinate (false for None).
 bool isSolidTexture(TextureKind kind);
 
+// Whether the kind reads the 2D (u, v) of the shape's mapping (false for None).
+bool readsUv(TextureKind kind);
+
 // The scene-file name of a kind ("checker", "solid_checker", ...; "none").
 const char* textureKindName(TextureKind kind);
 
@@ -96,5 +99,5 @@ bool inRange(const KeyRange& range, double value);
 std::string textureKindsMarkdown();
 
 // The material's texture words of gpu::Material, from the kind's row: each key's value in its
-// slot (imageLayer is set by the caller).
+// slot (the image's element, size and wrap are packed with the scene's images: gpu_scene.cpp).
 void packTexture(const TextureDesc& texture, gpu::Material* out);
