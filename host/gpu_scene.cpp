@@ -159,8 +159,13 @@ gpu::Plane packPlane(const Plane& p, const TextureDesc& texture, glm::dvec3 eye,
   // camera's distance in decals, as the decal's size on screen shrinks: a fixed fraction of a
   // pixel.)
   if (!imageClamped(texture)) image = glm::dvec2(reduceModulo(image.x, 1.0), reduceModulo(image.y, 1.0));
-  gp.imageRight = glm::vec4(glm::vec3(imageX), float(clampTexCoord(image.x)));
-  gp.imageDown = glm::vec4(glm::vec3(imageY), float(clampTexCoord(image.y)));
+  // Image axes only on an image's plane: lavapipe runs an image lookup for every lane of a SIMD
+  // group, masked, and with zero axes a lane on another plane reads one texel, not texels spread
+  // over the image by that plane's coordinates (docs/performance.md, "Masked image lookups").
+  if (texture.kind == TextureKind::Image) {
+    gp.imageRight = glm::vec4(glm::vec3(imageX), float(clampTexCoord(image.x)));
+    gp.imageDown = glm::vec4(glm::vec3(imageY), float(clampTexCoord(image.y)));
+  }
   // solid = (R^-1 (x - o) + o) / s + offset, x = camera-relative + eye: the eye's part here.
   const glm::dvec3 origin = pf.distance * pf.normal;
   gp.solidOffset = glm::vec4(glm::vec3(reduceSolid((inverse * eye + (origin - inverse * origin)) / s + place.offset, texture)), 0.0f);

@@ -52,10 +52,11 @@ TEST(GpuScene, CourseSceneUploadsOnlyTheMaterialsItUses) {
 TEST(GpuScene, PlacementPacksTheTurnedAxesAndTheIdentityWithoutIt) {
   Scene scene = parseSceneText(
       "material m { texture = checker; }\ncamera { eye = (0.3, 3, 12); }\n"
-      "sphere { m; }\nplane { m; }\n"
+      "material picture { texture = image { file = \"textures/uv_grid.png\"; }; }\n"
+      "sphere { m; }\nplane { picture; }\n"
       "sphere { m; tex_rotate = (0, 90, 0); tex_scale = 0.5; tex_offset = (0.25, 3.5, 0); }\n"
       "plane { m; tex_rotate = (0, 90, 0); tex_scale = 2; tex_offset = (0.5, 0.25, 0); }\n",
-      "t.cfg");
+      kSourceDir + "/t.cfg");
   GpuScene g = buildGpuScene(scene, 64, 48);
   EXPECT_EQ(g.spheres[0].texRotation, glm::vec4(0, 0, 0, 1));
   EXPECT_EQ(g.spheres[0].solidOffset, glm::vec4(0, 0, 0, 1));
@@ -81,6 +82,10 @@ TEST(GpuScene, PlacementPacksTheTurnedAxesAndTheIdentityWithoutIt) {
     EXPECT_NEAR(g.planes[1].binormal[k], glm::vec4(1, 0, 0, 0)[k], 1e-7f);
   }
   EXPECT_EQ(g.planes[1].tangentScale.w, 2.0f);
+  // A plane whose texture is not an image has no image axes: its lanes read one texel in the
+  // kernel's masked image lookups.
+  EXPECT_EQ(g.planes[1].imageRight, glm::vec4(0.0f));
+  EXPECT_EQ(g.planes[1].imageDown, glm::vec4(0.0f));
   // u at the eye: (eye . (0, 0, -1)) / 2 + 0.5 = -5.5: tile -6, fraction 0.5; v: 0.15 + 0.25.
   EXPECT_NEAR(g.planes[1].uvOffset.x, 0.5f, 1e-6f);
   EXPECT_NEAR(g.planes[1].uvOffset.y, 0.4f, 1e-6f);
