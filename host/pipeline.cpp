@@ -1,9 +1,11 @@
 #include "pipeline.h"
 
 #include "common.h"
-// Generated at build time by glslangValidator --vn (CMakeLists.txt, add_shader_variant).
+// Generated at build time by glslangValidator --vn (CMakeLists.txt, add_spirv).
+#include "trace_box_samples_spv.h"
 #include "trace_box_spv.h"
 #include "trace_debug_spv.h"
+#include "trace_point_samples_spv.h"
 #include "trace_point_spv.h"
 
 #include <cstddef>
@@ -61,17 +63,27 @@ VkPipeline createComputePipeline(const Device& device, VkPipelineLayout layout, 
   return pipeline;
 }
 
+namespace {
+
+struct SpirvModule {
+  const uint32_t* code;
+  size_t bytes;
+};
+#define SPIRV_MODULE(name) SpirvModule{name, sizeof(name)}
+
+// The build variant: debug outputs, or the shaded image with point or box textures, from one
+// sample per dispatch or N x N samples in one (trace.comp.glsl, RAYTEX_SUPERSAMPLE).
+SpirvModule traceVariant(const KernelKey& key) {
+  if (key.outputMode != OUTPUT_SHADED) return SPIRV_MODULE(trace_debug_spv);
+  const bool samples = key.samplesPerSide > 1 && !key.progressive;
+  if (key.textureFilter == FILTER_BOX) return samples ? SPIRV_MODULE(trace_box_samples_spv) : SPIRV_MODULE(trace_box_spv);
+  return samples ? SPIRV_MODULE(trace_point_samples_spv) : SPIRV_MODULE(trace_point_spv);
+}
+
+}  // namespace
+
 VkPipeline createTracePipeline(const Device& device, VkPipelineLayout layout, const KernelKey& key) {
-  // The build variant: debug outputs, or the shaded image with point or box textures.
-  const uint32_t* code = trace_point_spv;
-  size_t bytes = sizeof(trace_point_spv);
-  if (key.outputMode != OUTPUT_SHADED) {
-    code = trace_debug_spv;
-    bytes = sizeof(trace_debug_spv);
-  } else if (key.textureFilter == FILTER_BOX) {
-    code = trace_box_spv;
-    bytes = sizeof(trace_box_spv);
-  }
+  const SpirvModule variant = traceVariant(key);
 
   std::vector<VkSpecializationMapEntry> entries = {
       {SPEC_SPHERE_TEXTURE_KINDS, offsetof(KernelKey, shape.sphereKinds), sizeof(uint32_t)},
@@ -95,5 +107,6 @@ VkPipeline createTracePipeline(const Device& device, VkPipelineLayout layout, co
   specialization.dataSize = sizeof(KernelKey);
   specialization.pData = &key;
   // warmPipeline dispatches past the image: the base needs VK_PIPELINE_CREATE_DISPATCH_BASE_BIT.
-  return createComputePipeline(device, layout, code, bytes, &specialization, VK_PIPELINE_CREATE_DISPATCH_BASE_BIT);
+  return createComputePipeline(device, layout, variant.code, variant.bytes, &specialization,
+                               VK_PIPELINE_CREATE_DISPATCH_BASE_BIT);
 }

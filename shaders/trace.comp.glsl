@@ -138,14 +138,15 @@ vec3 albedoAt(Hit hit, Surface s, Material m, vec3 origin, vec2 film, float spac
   vec3 dpdx, dpdy;
   Footprint fp;
   TexCoord tc = footprintAt(hit, s, origin, film, spacing, fp, dpdx, dpdy);
-  if (!hasClosedFormFilter(m.textureKind)) return textureColor(m, tc, fp);
   float lx = length(dpdx), ly = length(dpdy);
   bool alongX = lx >= ly;
   float ratio = alongX ? lx / max(ly, 1.0e-30) : ly / max(lx, 1.0e-30);
   // Probes matter only where the long axis spans a good part of a check: no probe shorter
-  // than a quarter of one (a footprint inside a check is already exact).
+  // than a quarter of one (a footprint inside a check is already exact). Other kinds take one
+  // probe, so textureColor has one call site: lavapipe runs every inlined copy of it (the
+  // image lookups included) for each SIMD group, whatever kind its lanes hit.
   float checks = alongX ? filteredCells(m, fp.duvdx, fp.dsdx) : filteredCells(m, fp.duvdy, fp.dsdy);
-  uint k = uint(clamp(ceil(min(ratio, 4.0 * checks)), 1.0, float(MAX_PROBES)));
+  uint k = hasClosedFormFilter(m.textureKind) ? uint(clamp(ceil(min(ratio, 4.0 * checks)), 1.0, float(MAX_PROBES))) : 1u;
   if (k == 1u) return textureColor(m, tc, fp);
   if (alongX) {
     fp.duvdx /= float(k);
@@ -228,23 +229,24 @@ void main() {
   const uint n = SAMPLES_PER_SIDE;
   vec3 sum = vec3(0.0);
   if (PROGRESSIVE) sum = frame.sampleIndex == 0u ? vec3(0.0) : accumulation[outputIndex].rgb;
-  // No for loop: lavapipe tests a loop's condition at the top of each pass and leaves only
-  // when no lane is left, so a for loop runs its body once more with every lane masked off,
-  // and nested ones more again: the whole trace three times at 1 sample. NIR unrolls them
-  // only while the body is small, so kernels with noise paid it (aDturbulence, 1 spp: 931
-  // x86 instructions per pixel before, 456 after; bench/instructions.sh). One sample needs
-  // no loop; a do-while tests at the bottom. Two calls of radiance, not three: the driver
-  // inlines each before it drops the branches the constants rule out (a third call cost
-  // about 20 % more pipeline creation).
-  if (PROGRESSIVE || n == 1u) {
-    uint k = PROGRESSIVE ? frame.sampleIndex : 0u;
+#ifdef RAYTEX_SUPERSAMPLE
+  // N x N samples in one dispatch (N > 1, not progressive). No for loop: lavapipe tests a
+  // loop's condition at the top of each pass and leaves only when no lane is left, so a for
+  // loop runs its body once more with every lane masked off (aDturbulence: 931 x86
+  // instructions per pixel against 456); a do-while tests at the bottom.
+  uint k = 0u;
+  do {
     sum += radiance(origin, vec2(pixel) + (vec2(k % n, k / n) + 0.5) / float(n), 1.0 / float(n));
-  } else {
-    uint k = 0u;
-    do {
-      sum += radiance(origin, vec2(pixel) + (vec2(k % n, k / n) + 0.5) / float(n), 1.0 / float(n));
-    } while (++k < n * n);
-  }
+  } while (++k < n * n);
+#else
+  // One sample per dispatch, with no loop around it: the pixel centre, or the progressive
+  // sample frame.sampleIndex. (One call of radiance per build variant: the driver inlines each
+  // call before the constants drop what a scene lacks, so a second call costs pipeline creation
+  // its whole size again; a loop around this one cost 9 % more per pixel where it nests loops.
+  // docs/performance.md, "One trace per kernel".)
+  uint k = PROGRESSIVE ? frame.sampleIndex : 0u;
+  sum += radiance(origin, vec2(pixel) + (vec2(k % n, k / n) + 0.5) / float(n), 1.0 / float(n));
+#endif
   if (PROGRESSIVE) {
     if (inside) {
       accumulation[outputIndex] = vec4(sum, 1.0);
