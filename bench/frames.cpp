@@ -3,8 +3,10 @@
 // instructions the kernel executes per frame. Unlike times, the count does not move with the
 // load of a shared machine, so kernel variants can be compared exactly.
 // The kernel is built around the scene's values as in raytex render (bakeScene), unless the
-// sixth argument is "unbaked"; its textures are point-sampled unless the seventh is "box".
-// Usage: raytex_bench_frames SCENE WIDTH HEIGHT FRAMES [SAMPLES_PER_SIDE [baked|unbaked [point|box]]]
+// sixth argument is "unbaked"; its textures are point-sampled unless the seventh is "box"; the
+// eighth, "progressive", renders as the viewer does: one sample per frame, accumulated.
+// Usage: raytex_bench_frames SCENE WIDTH HEIGHT FRAMES [SAMPLES_PER_SIDE [baked|unbaked [point|box
+//        [single|progressive]]]]
 #include "gpu_scene.h"
 #include "parser.h"
 #include "renderer.h"
@@ -15,7 +17,9 @@
 
 int main(int argc, char** argv) {
   if (argc < 5) {
-    fprintf(stderr, "usage: %s SCENE WIDTH HEIGHT FRAMES [SAMPLES_PER_SIDE [baked|unbaked [point|box]]]\n",
+    fprintf(stderr,
+            "usage: %s SCENE WIDTH HEIGHT FRAMES [SAMPLES_PER_SIDE [baked|unbaked [point|box "
+            "[single|progressive]]]]\n",
             argv[0]);
     return 2;
   }
@@ -24,18 +28,21 @@ int main(int argc, char** argv) {
   uint32_t side = argc > 5 ? uint32_t(atoi(argv[5])) : 1;
   bool baked = !(argc > 6 && std::string(argv[6]) == "unbaked");
   uint32_t filter = argc > 7 && std::string(argv[7]) == "box" ? FILTER_BOX : FILTER_POINT;
+  bool progressive = argc > 8 && std::string(argv[8]) == "progressive";
   Renderer r;
   try {
     GpuScene scene = buildGpuScene(parseSceneFile(argv[1]), width, height);
     createRenderer(r, {});
+    r.accumulate = progressive;
     uploadScene(r, scene);
     KernelOptions kernel;
     kernel.filterBox = filter == FILTER_BOX;
     kernel.samplesPerSide = side;
     kernel.bakeValues = baked;
+    kernel.progressive = progressive;
     preparePipeline(r, kernelKey(scene, kernel));
-    renderFrame(r);
-    for (int i = 0; i < frames; ++i) renderFrame(r);
+    renderSample(r, 0);
+    for (int i = 0; i < frames; ++i) renderSample(r, progressive ? uint32_t(i + 1) % (side * side) : 0);
   } catch (const std::exception& e) {
     fprintf(stderr, "%s\n", e.what());
     destroyRenderer(r);

@@ -6,7 +6,8 @@
 # Needs valgrind (apt-get install valgrind); about 15 s per scene at 320x240.
 # Usage: bench/instructions.sh [BUILD_DIR] SCENE... (env: WIDTH, HEIGHT, SIDE = samples per side,
 # UNBAKED=1: the kernel that reads the scene from its uniform blocks, as the viewer's does;
-# FILTER=box: the box-filtered kernel, as --filter box)
+# FILTER=box: the box-filtered kernel, as --filter box; PROGRESSIVE=1: the viewer's kernel, one
+# sample per frame, accumulated)
 set -euo pipefail
 build=${1:-build}
 shift
@@ -18,13 +19,14 @@ export LP_NUM_THREADS=1 MESA_SHADER_CACHE_DISABLE=true
 width=${WIDTH:-320} height=${HEIGHT:-240} side=${SIDE:-1}
 baked=$([ "${UNBAKED:-0}" = 1 ] && echo unbaked || echo baked)
 filter=${FILTER:-point}
+mode=$([ "${PROGRESSIVE:-0}" = 1 ] && echo progressive || echo single)
 case "$filter" in point|box) ;; *) echo "instructions.sh: FILTER must be point or box" >&2; exit 1 ;; esac
 count() {  # SCENE FRAMES -> total instructions of the process
   valgrind --tool=callgrind --smc-check=all --callgrind-out-file=/dev/null \
-    "$frames" "$1" "$width" "$height" "$2" "$side" "$baked" "$filter" 2>&1 | sed -n 's/.*Collected : \([0-9]*\).*/\1/p'
+    "$frames" "$1" "$width" "$height" "$2" "$side" "$baked" "$filter" "$mode" 2>&1 | sed -n 's/.*Collected : \([0-9]*\).*/\1/p'
 }
 for scene in "$@"; do
   base=$(count "$scene" 0)
   more=$(count "$scene" 2)
-  echo "$scene ${width}x$height, $((side * side)) spp, $baked, $filter: $(((more - base) / 2 / (width * height))) instructions/pixel"
+  echo "$scene ${width}x$height, $((side * side)) spp, $baked, $filter, $mode: $(((more - base) / 2 / (width * height))) instructions/pixel"
 done
