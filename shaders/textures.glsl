@@ -38,27 +38,35 @@
 #define TEXTURE_EVAL(name) name##Point(m, tc)
 #endif
 // A case of the dispatch for a kind that returns a blend factor t: colour = mix(color1, color2, t).
-// Guarded cases in a chain, not a GLSL switch: lavapipe ran the switch's box kernel 1.5 % slower
-// (docs/performance.md, "One dispatch per texture kind"). One mix after the chain, not one per
-// case: the kernel built around a scene's values then rounds exactly as the one reading them.
+// Each case is guarded by its kind's specialisation bit, so absent kinds compile to nothing.
+// One mix after the switch, not one per case: the kernel built around a scene's values then
+// rounds exactly as the one reading them.
 #define TEXTURE_BLEND_CASE(kind, name) \
-  if (TEXTURE_KIND_PRESENT(kind) && m.textureKind == (kind)) t = TEXTURE_EVAL(name);
+  case kind:                           \
+    if (TEXTURE_KIND_PRESENT(kind)) t = TEXTURE_EVAL(name); \
+    break;
 
 #ifdef RAYTEX_FILTER_BOX
 vec3 textureColor(Material m, TexCoord tc, Footprint fp) {
 #else
 vec3 textureColor(Material m, TexCoord tc) {
 #endif
-  if (TEXTURE_KIND_PRESENT(TEX_IMAGE) && m.textureKind == TEX_IMAGE) return TEXTURE_EVAL(image);
   float t = -1.0;  // stays < 0 for untextured materials
-  TEXTURE_BLEND_CASE(TEX_CHECKER, checker)
-  TEXTURE_BLEND_CASE(TEX_SOLID_CHECKER, solidChecker)
-  TEXTURE_BLEND_CASE(TEX_NOISE, noise)
-  TEXTURE_BLEND_CASE(TEX_MARBLE, marble)
-  TEXTURE_BLEND_CASE(TEX_WOOD, wood)
-  TEXTURE_BLEND_CASE(TEX_TURBULENCE, turbulence)
-  TEXTURE_BLEND_CASE(TEX_DTURBULENCE, dturbulence)
-  TEXTURE_BLEND_CASE(TEX_BRICKS, bricks)
+  switch (m.textureKind) {
+    case TEX_IMAGE:
+      if (TEXTURE_KIND_PRESENT(TEX_IMAGE)) return TEXTURE_EVAL(image);
+      break;
+    TEXTURE_BLEND_CASE(TEX_CHECKER, checker)
+    TEXTURE_BLEND_CASE(TEX_SOLID_CHECKER, solidChecker)
+    TEXTURE_BLEND_CASE(TEX_NOISE, noise)
+    TEXTURE_BLEND_CASE(TEX_MARBLE, marble)
+    TEXTURE_BLEND_CASE(TEX_WOOD, wood)
+    TEXTURE_BLEND_CASE(TEX_TURBULENCE, turbulence)
+    TEXTURE_BLEND_CASE(TEX_DTURBULENCE, dturbulence)
+    TEXTURE_BLEND_CASE(TEX_BRICKS, bricks)
+    default:
+      break;
+  }
   if (t < -0.5) return m.diffuse.rgb;  // TEX_NONE (far from any rounded blend value)
   return mix(m.color1.rgb, m.color2.rgb, t);
 }
