@@ -15,6 +15,7 @@ RayCount countRays(const Scene& scene, uint32_t width, uint32_t height, uint32_t
   if (width == 0 || height == 0) return count;
   const ReferenceCamera camera = referenceCamera(scene.camera, int(width), int(height));
   const glm::dvec3 eye = scene.camera.eye;
+  const SphereBvh bvh = buildSphereBvh(scene.spheres);
   std::vector<uint64_t> rowShadow(height, 0);
   forEachRowInParallel(int(height), 0, [&](int y) {
     uint64_t shadow = 0;
@@ -23,7 +24,7 @@ RayCount countRays(const Scene& scene, uint32_t width, uint32_t height, uint32_t
         for (int sx = 0; sx < n; ++sx) {
           const glm::dvec3 dir =
               referenceRayDirection(camera, x, y, referenceSampleOffset(sx, n), referenceSampleOffset(sy, n));
-          const ReferenceHit hit = referenceClosestHit(scene, eye, dir, false);
+          const ReferenceHit hit = referenceClosestHit(scene, eye, dir, false, &bvh);
           if (hit.kind == 0) continue;
           const glm::dvec3 normal = glm::dot(hit.n, dir) > 0.0 ? -hit.n : hit.n;  // facing the viewer
           for (const Light& light : scene.lights) {

@@ -63,11 +63,12 @@ void forEachRowInParallel(int height, int threads, const std::function<void(int)
   if (error) std::rethrow_exception(error);
 }
 
-ReferenceHit referenceClosestHit(const Scene& scene, glm::dvec3 o, glm::dvec3 d, bool withTexCoords) {
+ReferenceHit referenceClosestHit(const Scene& scene, glm::dvec3 o, glm::dvec3 d, bool withTexCoords,
+                                 const SphereBvh* bvh) {
   ReferenceHit best;
   best.t = INFINITY;
   // Spheres: |o + t d - c|^2 = r^2 with |d| = 1, textbook roots in double.
-  for (size_t i = 0; i < scene.spheres.size(); ++i) {
+  auto sphere = [&](uint32_t i) {
     const Sphere& s = scene.spheres[i];
     const glm::dvec3 f = o - glm::dvec3(s.center);
     const double r = s.radius;
@@ -77,12 +78,12 @@ ReferenceHit referenceClosestHit(const Scene& scene, glm::dvec3 o, glm::dvec3 d,
     const double margin = std::abs(perpDistance - r) / r;
     if (disc < 0.0) {
       best.edgeMargin = std::min(best.edgeMargin, margin);
-      continue;
+      return;
     }
     const double root = std::sqrt(disc);
     double t = -b - root;
     if (t <= 0.0) t = -b + root;
-    if (t <= 0.0 || t >= best.t) continue;
+    if (t <= 0.0 || t >= best.t) return;
     best = ReferenceHit{};
     best.kind = 2;
     best.index = int(i);
@@ -91,7 +92,11 @@ ReferenceHit referenceClosestHit(const Scene& scene, glm::dvec3 o, glm::dvec3 d,
     best.p = glm::dvec3(s.center) + r * best.n;
     if (withTexCoords) best.tc = sphereTexCoord(s.placement, best.n);
     best.edgeMargin = margin;
-  }
+  };
+  if (bvh)
+    visitSpheresAlong(*bvh, o, d, best.t, sphere);
+  else
+    for (uint32_t i = 0; i < scene.spheres.size(); ++i) sphere(i);
   for (size_t i = 0; i < scene.planes.size(); ++i) {
     const Plane& pl = scene.planes[i];
     const PlaneFrame frame = planeFrame(glm::dvec3(pl.normal), double(pl.distance));

@@ -2,6 +2,7 @@
 // independently of the shaders, so image tests can check the GPU per pixel.
 #pragma once
 
+#include "bvh.h"
 #include "mapping.h"
 #include "scene.h"
 
@@ -48,5 +49,7 @@ void forEachRowInParallel(int height, int threads, const std::function<void(int)
 
 // The nearest hit along the ray. withTexCoords false leaves tc unset, for callers that need
 // only what was hit and where (ray counting): the mappings' trigonometry is most of the cost.
+// With bvh (buildSphereBvh of scene.spheres) only the spheres whose boxes the ray enters are
+// tested, with the same result, except that edgeMargin then covers only those spheres.
 ReferenceHit referenceClosestHit(const Scene& scene, glm::dvec3 origin, glm::dvec3 direction,
-                                 bool withTexCoords = true);
+                                 bool withTexCoords = true, const SphereBvh* bvh = nullptr);

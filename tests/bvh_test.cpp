@@ -1,0 +1,107 @@
+// The sphere BVH: its structure, and closest hits through it against testing every sphere
+// (no device).
+#include "bvh.h"
+#include "reference.h"
+
+#include <glm/geometric.hpp>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <random>
+#include <vector>
+
+namespace {
+
+Scene randomSpheres(int n, double side, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> position(-0.5 * side, 0.5 * side), radius(0.05, 0.6);
+  Scene scene;
+  for (int i = 0; i < n; ++i) {
+    Sphere s;
+    s.center = {position(rng), position(rng), position(rng)};
+    s.radius = radius(rng);
+    scene.spheres.push_back(s);
+  }
+  return scene;
+}
+
+bool contains(const BvhNode& node, const Sphere& s) {
+  for (int a = 0; a < 3; ++a)
+    if (s.center[a] - s.radius < node.lo[a] || s.center[a] + s.radius > node.hi[a]) return false;
+  return true;
+}
+
+// Walks the tree from `node`, checking that every box holds what lies below it; returns the
+// spheres below, in order.
+std::vector<uint32_t> spheresBelow(const SphereBvh& bvh, const Scene& scene, uint32_t node) {
+  const BvhNode& n = bvh.nodes[node];
+  std::vector<uint32_t> below;
+  if (n.count > 0) {
+    below.assign(bvh.order.begin() + n.index, bvh.order.begin() + n.index + n.count);
+  } else {
+    EXPECT_GT(n.index, node + 1);
+    below = spheresBelow(bvh, scene, node + 1);
+    std::vector<uint32_t> second = spheresBelow(bvh, scene, n.index);
+    below.insert(below.end(), second.begin(), second.end());
+  }
+  for (uint32_t i : below) EXPECT_TRUE(contains(n, scene.spheres[i])) << "node " << node << ", sphere " << i;
+  return below;
+}
+
+// Closest hits through the BVH and without it, for rays from inside and outside the cloud in
+// every direction, some along the axes (direction components of 0).
+void expectSameHits(const Scene& scene, double side, unsigned seed) {
+  const SphereBvh bvh = buildSphereBvh(scene.spheres);
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> position(-side, side), component(-1.0, 1.0);
+  for (int r = 0; r < 3000; ++r) {
+    const glm::dvec3 o(position(rng), position(rng), position(rng));
+    glm::dvec3 d(component(rng), component(rng), component(rng));
+    if (r % 10 == 0) d = glm::dvec3(0.0);
+    if (r % 10 == 0) d[r % 3] = r % 20 == 0 ? 1.0 : -1.0;
+    if (glm::dot(d, d) == 0.0) continue;
+    d = glm::normalize(d);
+    const ReferenceHit all = referenceClosestHit(scene, o, d, false);
+    const ReferenceHit fast = referenceClosestHit(scene, o, d, false, &bvh);
+    ASSERT_EQ(fast.kind, all.kind) << "ray " << r;
+    ASSERT_EQ(fast.index, all.index) << "ray " << r;
+    ASSERT_EQ(fast.t, all.t) << "ray " << r;
+  }
+}
+
+TEST(Bvh, EverySphereIsInOneLeafAndEveryBoxHoldsItsSpheres) {
+  const Scene scene = randomSpheres(2000, 40.0, 1);
+  const SphereBvh bvh = buildSphereBvh(scene.spheres);
+  std::vector<uint32_t> below = spheresBelow(bvh, scene, 0);
+  ASSERT_EQ(below.size(), scene.spheres.size());
+  std::sort(below.begin(), below.end());
+  for (uint32_t i = 0; i < below.size(); ++i) EXPECT_EQ(below[i], i);
+  for (const BvhNode& n : bvh.nodes) EXPECT_LE(n.count, kBvhLeafSize);
+  // A tree, not a list: about 2N / leaf size nodes.
+  EXPECT_LT(bvh.nodes.size(), 2 * scene.spheres.size());
+}
+
+TEST(Bvh, ClosestHitsMatchTestingEverySphere) {
+  expectSameHits(randomSpheres(3000, 30.0, 2), 30.0, 3);
+  expectSameHits(randomSpheres(7, 5.0, 4), 5.0, 5);
+  expectSameHits(randomSpheres(1, 5.0, 6), 5.0, 7);
+}
+
+TEST(Bvh, SpheresAtOnePointAndNoSpheres) {
+  Scene same;
+  for (int i = 0; i < 50; ++i) {
+    Sphere s;
+    s.center = {1.0, 2.0, 3.0};
+    s.radius = 0.1 + 0.01 * i;
+    same.spheres.push_back(s);
+  }
+  const SphereBvh bvh = buildSphereBvh(same.spheres);
+  EXPECT_EQ(spheresBelow(bvh, same, 0).size(), 50u);
+  expectSameHits(same, 4.0, 8);
+  const SphereBvh empty = buildSphereBvh({});
+  EXPECT_TRUE(empty.nodes.empty());
+  EXPECT_EQ(referenceClosestHit(Scene{}, glm::dvec3(0.0), glm::dvec3(0, 0, -1), false, &empty).kind, 0);
+}
+
+}  // namespace
