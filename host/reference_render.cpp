@@ -15,6 +15,7 @@ struct Context {
   const Scene& scene;
   const std::map<std::string, ImageRGBA8>& images;
   Material fallback;
+  SphereBvh bvh;  // over scene.spheres: primary and shadow rays test the spheres along them
 };
 
 const Material& materialOf(const Context& c, const ReferenceHit& hit) {
@@ -37,7 +38,7 @@ glm::dvec3 albedoAt(const Context& c, const Material& m, const ReferenceHit& hit
 // Phong with hard shadows (docs/scene-format.md, "Shading").
 glm::dvec3 shadeReference(const Context& c, glm::dvec3 o, glm::dvec3 d) {
   const Scene& scene = c.scene;
-  ReferenceHit hit = referenceClosestHit(scene, o, d);
+  ReferenceHit hit = referenceClosestHit(scene, o, d, true, &c.bvh);
   if (hit.kind == 0) return glm::dvec3(scene.background);
   const Material& m = materialOf(c, hit);
   glm::dvec3 n = glm::dot(hit.n, d) > 0.0 ? -hit.n : hit.n;
@@ -54,7 +55,7 @@ glm::dvec3 shadeReference(const Context& c, glm::dvec3 o, glm::dvec3 d) {
     glm::dvec3 l = toLight / dist;
     double nDotL = glm::dot(n, l);
     if (nDotL <= 0.0) continue;
-    ReferenceHit blocker = referenceClosestHit(scene, origin, l);
+    ReferenceHit blocker = referenceClosestHit(scene, origin, l, false, &c.bvh);
     if (blocker.kind != 0 && blocker.t < dist) continue;
     glm::dvec3 r = 2.0 * nDotL * n - l;
     double rDotV = std::max(glm::dot(r, -d), 0.0);
@@ -107,7 +108,7 @@ glm::dvec3 sampleImageReference(const ImageRGBA8& image, const TexCoordD& tc, Im
 ReferenceImage renderReference(const Scene& scene, int width, int height, int samplesPerSide, int threads,
                                uint32_t maxImageMiB) {
   std::map<std::string, ImageRGBA8> images = loadReferenceImages(scene, maxImageMiB);
-  Context context{scene, images, defaultMaterial()};
+  Context context{scene, images, defaultMaterial(), buildSphereBvh(scene.spheres)};
   ReferenceImage out;
   out.width = width;
   out.height = height;
