@@ -19,10 +19,6 @@ namespace {
 
 glm::vec4 v4(const glm::vec3& v, float w = 0.0f) { return glm::vec4(v, w); }
 
-const Material& materialAt(const Scene& scene, int index, const Material& fallback) {
-  return index < 0 ? fallback : scene.materials[size_t(index)];
-}
-
 // An image texture's Material.imageIndex and imageSize (common.h): its element of
 // BINDING_IMAGES, mip levels, wrap and size.
 void packImageFields(gpu::Material& g, const TextureDesc& t, const std::vector<SceneImage>& images, bool mipmaps) {

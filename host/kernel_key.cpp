@@ -7,14 +7,6 @@
 #include <string>
 #include <vector>
 
-namespace {
-
-const Material& materialAt(const Scene& scene, int index, const Material& fallback) {
-  return index < 0 ? fallback : scene.materials[size_t(index)];
-}
-
-}  // namespace
-
 KernelKey kernelKey(const GpuScene& scene, const KernelOptions& options) {
   KernelKey key;
   key.shape = scene.shape;

@@ -21,7 +21,7 @@ struct Context {
 const Material& materialOf(const Context& c, const ReferenceHit& hit) {
   int index = hit.kind == 1 ? c.scene.planes[size_t(hit.index)].material
                             : c.scene.spheres[size_t(hit.index)].material;
-  return index < 0 ? c.fallback : c.scene.materials[size_t(index)];
+  return materialAt(c.scene, index, c.fallback);
 }
 
 glm::dvec3 albedoAt(const Context& c, const Material& m, const ReferenceHit& hit) {

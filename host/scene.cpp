@@ -17,6 +17,10 @@ Material defaultMaterial() {
   return m;
 }
 
+const Material& materialAt(const Scene& scene, int index, const Material& fallback) {
+  return index < 0 ? fallback : scene.materials[size_t(index)];
+}
+
 std::vector<int> usedMaterials(const Scene& scene) {
   std::vector<int> used;
   auto note = [&](int m) {

@@ -136,5 +136,8 @@ struct Scene {
 // The material used by objects that name none.
 Material defaultMaterial();
 
+// An object's material: scene.materials[index], or `fallback` (defaultMaterial()) for -1.
+const Material& materialAt(const Scene& scene, int index, const Material& fallback);
+
 // Materials referenced by objects, in first-use order; -1 stands for the default material.
 std::vector<int> usedMaterials(const Scene& scene);
