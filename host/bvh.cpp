@@ -134,29 +134,33 @@ void visitSpheresAlong(const SphereBvh& bvh, glm::dvec3 o, glm::dvec3 d, const d
                        const std::function<void(uint32_t)>& visit) {
   if (bvh.nodes.empty()) return;
   const glm::dvec3 inv = 1.0 / d;
-  std::vector<uint32_t> stack{0};
-  while (!stack.empty()) {
-    const BvhNode& n = bvh.nodes[stack.back()];
-    const uint32_t self = stack.back();
-    stack.pop_back();
+  struct Entry {
+    uint32_t node;
+    double tEnter;
+  };
+  // Reused by each thread's rays: one allocation per thread, not per ray.
+  thread_local std::vector<Entry> stack;
+  stack.clear();
+  auto push = [&](uint32_t node) {
     double tEnter, tLeave;
-    slab(n, o, inv, tEnter, tLeave);
-    if (tEnter > tLeave || tEnter > tMax) continue;
+    slab(bvh.nodes[node], o, inv, tEnter, tLeave);
+    if (tEnter <= tLeave && tEnter <= tMax) stack.push_back({node, tEnter});
+  };
+  push(0);
+  while (!stack.empty()) {
+    const Entry e = stack.back();
+    stack.pop_back();
+    if (e.tEnter > tMax) continue;  // a hit found since it was pushed lies nearer
+    const BvhNode& n = bvh.nodes[e.node];
     if (n.count > 0) {
       for (uint32_t k = n.index; k < n.index + n.count; ++k) visit(bvh.order[k]);
       continue;
     }
     // The nearer child on top of the stack, so a close hit prunes the farther one.
-    const uint32_t first = self + 1, second = n.index;
-    double e0, l0, e1, l1;
-    slab(bvh.nodes[first], o, inv, e0, l0);
-    slab(bvh.nodes[second], o, inv, e1, l1);
-    if (e0 <= e1) {
-      stack.push_back(second);
-      stack.push_back(first);
-    } else {
-      stack.push_back(first);
-      stack.push_back(second);
-    }
+    const size_t before = stack.size();
+    push(e.node + 1);
+    push(n.index);
+    if (stack.size() == before + 2 && stack[before].tEnter < stack[before + 1].tEnter)
+      std::swap(stack[before], stack[before + 1]);
   }
 }
