@@ -94,7 +94,7 @@ struct Builder {
     bvh.nodes[node].lo = bounds.lo - pad;
     bvh.nodes[node].hi = bounds.hi + pad;
     uint32_t split = end - begin > kBvhLeafSize ? sahSplit(begin, end) : begin;
-    if (split == begin && end - begin > 2 * kBvhLeafSize) split = begin + (end - begin) / 2;  // by index
+    if (split == begin && end - begin > kBvhLeafSize) split = begin + (end - begin) / 2;  // by index
     if (split == begin) {
       bvh.nodes[node].count = end - begin;
       bvh.nodes[node].index = begin;

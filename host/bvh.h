@@ -23,7 +23,8 @@ struct SphereBvh {
   std::vector<uint32_t> order;  // sphere indices, each leaf's a contiguous run
 };
 
-// At most kBvhLeafSize spheres in a leaf unless they cannot be told apart by their centres.
+// At most kBvhLeafSize spheres in a leaf (those whose centres no split tells apart are split by
+// their order).
 constexpr uint32_t kBvhLeafSize = 4;
 
 SphereBvh buildSphereBvh(const std::vector<Sphere>& spheres);

@@ -1,5 +1,6 @@
 #include "gpu_scene.h"
 
+#include "gpu_tree.h"
 #include "plane_frame.h"
 #include "noise_permutation.h"
 #include "scene_limits.h"
@@ -224,6 +225,8 @@ void packCamera(GpuScene& g, const Scene& scene, uint32_t width, uint32_t height
   for (const Plane& p : scene.planes)
     g.planes.push_back(packPlane(p, materialAt(scene, p.material, fallback).texture, eye, g.materialIndex.at(p.material)));
   for (const Light& l : scene.lights) g.lights.push_back({v4(glm::vec3(l.position - eye)), v4(l.color)});
+  if (g.shape.sphereTree != SPHERE_TREE_NONE) layoutSphereTree(g.sphereTree, g.spheres, g.treeNodes);
+  f.treeNodeCount = uint32_t(g.treeNodes.size());
   f.sphereCount = uint32_t(g.spheres.size());
   f.planeCount = uint32_t(g.planes.size());
   f.lightCount = uint32_t(g.lights.size());
@@ -247,6 +250,7 @@ GpuScene buildGpuScene(const Scene& scene, uint32_t width, uint32_t height, cons
     if (material.texture.kind != TextureKind::None) needsNoise |= textureKindInfo(material.texture.kind).needsNoise;
   }
   g.shape = sceneShape(scene);
+  if (g.shape.sphereTree != SPHERE_TREE_NONE) g.sphereTree = buildSphereBvh(scene.spheres);
 
   g.materialIndex = materialIndex;
   packCamera(g, scene, width, height);

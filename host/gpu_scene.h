@@ -2,6 +2,7 @@
 // scene's objects use goes to the GPU. No Vulkan.
 #pragma once
 
+#include "bvh.h"
 #include "common.h"
 #include "image_io.h"
 #include "kernel_key.h"
@@ -23,10 +24,14 @@ struct ImageChain {
 
 struct GpuScene {
   gpu::Frame frame{};
-  std::vector<gpu::Sphere> spheres;
+  std::vector<gpu::Sphere> spheres;  // in the scene's order, or the tree's leaf order with a tree
   std::vector<gpu::Plane> planes;
   std::vector<gpu::Material> materials;  // those referenced by objects (or all: allMaterials)
   std::vector<gpu::Light> lights;
+  // Where shape.sphereTree walks a tree: the tree over the scene's spheres (built once, in world
+  // space) and its nodes as laid out for the camera (packCamera).
+  SphereBvh sphereTree;
+  std::vector<gpu::BvhNode> treeNodes;
   gpu::NoiseTable noise{};
   SceneShape shape;  // the kinds in use and the counts: what the kernel is specialised to
   std::map<int, uint32_t> materialIndex;  // Scene material (-1: the default) -> index in materials

@@ -72,11 +72,11 @@ int renderHeadless(const RenderOptions& options, uint32_t extraFrames, HeadlessR
     times.device = lapMs(t);
     if (renderer.device.lavapipe) checkLoopLimit(scene);
     // Samples that together would pass lavapipe's loop limit (kMaxLoopIterations) are added one
-    // dispatch at a time by the progressive kernel: the same image, bit for bit.
+    // dispatch at a time by the progressive kernel: the same image, bit for bit. A sphere tree's
+    // walks are not known before they run: its samples always go one at a time.
     const bool perSample = renderer.device.lavapipe && job.samplesPerPixel > 1 &&
-                           job.samplesPerPixel * loopIterationsPerSample(gpuScene.lights.size(),
-                                                                        gpuScene.spheres.size() + gpuScene.planes.size()) >
-                               kMaxLoopIterations;
+                           (gpuScene.shape.sphereTree != SPHERE_TREE_NONE ||
+                            job.samplesPerPixel * loopIterationsPerSample(scene) > kMaxLoopIterations);
     renderer.accumulate = perSample;
     uploadScene(renderer, gpuScene);
     times.upload = lapMs(t);

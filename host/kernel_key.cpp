@@ -1,6 +1,7 @@
 #include "kernel_key.h"
 
 #include "gpu_scene.h"
+#include "gpu_tree.h"
 
 #include <algorithm>
 #include <cstring>
@@ -42,6 +43,7 @@ SceneShape sceneShape(const Scene& scene) {
   shape.sphereCount = count(scene.spheres.size());
   shape.planeCount = count(scene.planes.size());
   shape.lightCount = count(scene.lights.size());
+  shape.sphereTree = sphereTreeFor(scene.spheres.size());
   // A plane's tex_scale and tex_offset, and its turn of (u, v) and the image, are folded into
   // what it packs anyway; its turned solid coordinate and a sphere's placement are not.
   const TexturePlacement none;

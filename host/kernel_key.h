@@ -22,11 +22,12 @@ struct SceneShape {
   uint32_t lightCount = COUNT_FROM_FRAME;
   uint32_t placed = 1;  // SPEC_TEXTURE_PLACEMENT (a VkBool32): an object's placement needs the kernel's
   uint32_t imageCount = MAX_IMAGES;  // image files the objects use (SPEC_IMAGE_COUNT)
+  uint32_t sphereTree = SPHERE_TREE_NONE;  // SPEC_SPHERE_TREE: how the spheres are walked
   uint32_t kinds() const { return sphereKinds | planeKinds; }
   bool operator==(const SceneShape& o) const {
     return sphereKinds == o.sphereKinds && planeKinds == o.planeKinds && sphereCount == o.sphereCount &&
            planeCount == o.planeCount && lightCount == o.lightCount && placed == o.placed &&
-           imageCount == o.imageCount;
+           imageCount == o.imageCount && sphereTree == o.sphereTree;
   }
 };
 
@@ -57,9 +58,11 @@ struct KernelKey {
   uint32_t samplesPerSide = 1;   // SPEC_SAMPLES_PER_SIDE
   uint32_t progressive = 0;      // SPEC_PROGRESSIVE (a VkBool32)
   BakedScene baked;              // SPEC_BAKED and the words, when options.bakeValues
+  uint32_t loopBudget = 0;       // SPEC_LOOP_BUDGET: set by the renderer for its device
   bool operator==(const KernelKey& o) const {
     return shape == o.shape && outputMode == o.outputMode && textureFilter == o.textureFilter &&
-           samplesPerSide == o.samplesPerSide && progressive == o.progressive && baked == o.baked;
+           samplesPerSide == o.samplesPerSide && progressive == o.progressive && baked == o.baked &&
+           loopBudget == o.loopBudget;
   }
 };
 
@@ -68,7 +71,8 @@ KernelKey kernelKey(const GpuScene& scene, const KernelOptions& options);
 
 // The scene's kinds per shape (kinds(): all in use) and its counts (those over
 // MAX_SPECIALISED_COUNT: COUNT_FROM_FRAME); the image files its objects use (at most
-// MAX_IMAGES: buildGpuScene refuses more); whether any object's placement needs the kernel.
+// MAX_IMAGES: buildGpuScene refuses more); whether any object's placement needs the kernel;
+// whether its spheres are walked through a tree (sphereTreeFor).
 SceneShape sceneShape(const Scene& scene);
 
 // The scene's values for a kernel built around them; not enabled if it has more than

@@ -31,6 +31,10 @@ VkDescriptorSetLayout createTraceSetLayout(const Device& device) {
       binding(BINDING_IMAGES, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, MAX_IMAGES),
       binding(BINDING_ACCUMULATION, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER),
       binding(BINDING_DISPLAY, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
+      binding(BINDING_TREE, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER),
+      binding(BINDING_TREE_STORAGE, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER),
+      binding(BINDING_SPHERE_STORAGE, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER),
+      binding(BINDING_STATUS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER),
   };
   VkDescriptorSetLayoutCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
   info.bindingCount = uint32_t(std::size(bindings));
@@ -93,6 +97,8 @@ VkPipeline createTracePipeline(const Device& device, VkPipelineLayout layout, co
       {SPEC_LIGHT_COUNT, offsetof(KernelKey, shape.lightCount), sizeof(uint32_t)},
       {SPEC_TEXTURE_PLACEMENT, offsetof(KernelKey, shape.placed), sizeof(VkBool32)},
       {SPEC_IMAGE_COUNT, offsetof(KernelKey, shape.imageCount), sizeof(uint32_t)},
+      {SPEC_SPHERE_TREE, offsetof(KernelKey, shape.sphereTree), sizeof(uint32_t)},
+      {SPEC_LOOP_BUDGET, offsetof(KernelKey, loopBudget), sizeof(uint32_t)},
       {SPEC_OUTPUT_MODE, offsetof(KernelKey, outputMode), sizeof(uint32_t)},
       {SPEC_SAMPLES_PER_SIDE, offsetof(KernelKey, samplesPerSide), sizeof(uint32_t)},
       {SPEC_PROGRESSIVE, offsetof(KernelKey, progressive), sizeof(VkBool32)},

@@ -2,6 +2,7 @@
 
 #include "common.h"
 #include "pipeline.h"
+#include "scene_limits.h"
 
 #include <algorithm>
 #include <chrono>
@@ -18,12 +19,13 @@ void writeDescriptors(Renderer& r) {
     imagesInfo[i] = {r.sampler, (i < r.images.size() ? r.images[i] : r.placeholder).view,
                      VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
   auto bufferInfo = [](const Buffer& b) { return VkDescriptorBufferInfo{b.buffer, 0, VK_WHOLE_SIZE}; };
-  const VkDescriptorBufferInfo buffers[] = {bufferInfo(r.frame),     bufferInfo(r.spheres),
-                                            bufferInfo(r.planes),    bufferInfo(r.materials),
-                                            bufferInfo(r.lights),    bufferInfo(r.noise),
-                                            bufferInfo(r.accumulation), bufferInfo(r.pixels)};
+  const VkDescriptorBufferInfo buffers[] = {
+      bufferInfo(r.frame),        bufferInfo(r.spheres), bufferInfo(r.planes),      bufferInfo(r.materials),
+      bufferInfo(r.lights),       bufferInfo(r.noise),   bufferInfo(r.accumulation), bufferInfo(r.pixels),
+      bufferInfo(r.tree),         bufferInfo(r.treeStorage), bufferInfo(r.sphereStorage), bufferInfo(r.status)};
   const uint32_t bufferBindings[] = {BINDING_FRAME,  BINDING_SPHERES, BINDING_PLANES,       BINDING_MATERIALS,
-                                     BINDING_LIGHTS, BINDING_NOISE,   BINDING_ACCUMULATION, BINDING_OUTPUT};
+                                     BINDING_LIGHTS, BINDING_NOISE,   BINDING_ACCUMULATION, BINDING_OUTPUT,
+                                     BINDING_TREE,   BINDING_TREE_STORAGE, BINDING_SPHERE_STORAGE, BINDING_STATUS};
 
   std::vector<VkWriteDescriptorSet> writes;
   auto write = [&](uint32_t binding, VkDescriptorType type) {
@@ -41,7 +43,9 @@ void writeDescriptors(Renderer& r) {
   images->descriptorCount = MAX_IMAGES;
   images->pImageInfo = imagesInfo;
   for (size_t i = 0; i < std::size(buffers); ++i) {
-    bool uniform = bufferBindings[i] != BINDING_ACCUMULATION && bufferBindings[i] != BINDING_OUTPUT;
+    const uint32_t b = bufferBindings[i];
+    bool uniform = b != BINDING_ACCUMULATION && b != BINDING_OUTPUT && b != BINDING_TREE_STORAGE &&
+                   b != BINDING_SPHERE_STORAGE && b != BINDING_STATUS;
     write(bufferBindings[i], uniform ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER
                                      : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER)->pBufferInfo = &buffers[i];
   }
@@ -57,6 +61,25 @@ void replaceUniformBuffer(Renderer& r, Buffer& buffer, const T* data, size_t cou
   destroyBuffer(r.device, buffer);
   buffer = createBuffer(r.device, sizeof(T) * capacity, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
   writeBuffer(buffer, block.data(), sizeof(T) * capacity);
+}
+
+// Replaces `buffer` with a storage buffer of `count` items from `data` (16 bytes when empty).
+template <typename T>
+void replaceStorageBuffer(Renderer& r, Buffer& buffer, const T* data, size_t count) {
+  destroyBuffer(r.device, buffer);
+  buffer = createBuffer(r.device, sizeof(T) * count, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+  writeBuffer(buffer, data, sizeof(T) * count);
+}
+
+// The spheres and the tree's nodes where the kernel reads them (SceneShape::sphereTree):
+// uniform blocks, or storage buffers over their sizes; the unused ones hold nothing.
+void replaceSphereBuffers(Renderer& r, const GpuScene& s) {
+  const bool storage = s.shape.sphereTree == SPHERE_TREE_STORAGE;
+  const size_t uniformSpheres = storage ? 0 : s.spheres.size();
+  replaceUniformBuffer(r, r.spheres, s.spheres.data(), uniformSpheres, MAX_UNIFORM_SPHERES);
+  replaceUniformBuffer(r, r.tree, s.treeNodes.data(), storage ? 0 : s.treeNodes.size(), MAX_UNIFORM_TREE_NODES);
+  replaceStorageBuffer(r, r.sphereStorage, s.spheres.data(), storage ? s.spheres.size() : 0);
+  replaceStorageBuffer(r, r.treeStorage, s.treeNodes.data(), storage ? s.treeNodes.size() : 0);
 }
 
 // Progressive sums, one vec4 per pixel; a placeholder when not accumulating (the binding exists).
@@ -138,8 +161,9 @@ void createPlaceholderImage(Renderer& r) {
 void createRenderer(Renderer& r, const DeviceOptions& options) {
   createDevice(r.device, options);
   // The largest uniform block the kernel declares (common.h): 64 KiB is common, 16 KiB the minimum.
-  const size_t largestBlock = std::max({sizeof(gpu::Sphere) * MAX_SPHERES, sizeof(gpu::Plane) * MAX_PLANES,
-                                        sizeof(gpu::Material) * MAX_MATERIALS, sizeof(gpu::Light) * MAX_LIGHTS});
+  const size_t largestBlock = std::max({sizeof(gpu::Sphere) * MAX_UNIFORM_SPHERES, sizeof(gpu::Plane) * MAX_PLANES,
+                                        sizeof(gpu::Material) * MAX_MATERIALS, sizeof(gpu::Light) * MAX_LIGHTS,
+                                        sizeof(gpu::BvhNode) * MAX_UNIFORM_TREE_NODES});
   const uint32_t maxRange = r.device.properties.limits.maxUniformBufferRange;
   if (maxRange < largestBlock) {
     std::string name = r.device.properties.deviceName;
@@ -149,6 +173,9 @@ void createRenderer(Renderer& r, const DeviceOptions& options) {
   }
   r.setLayout = createTraceSetLayout(r.device);
   createPlaceholderImage(r);
+  r.status = createBuffer(r.device, sizeof(uint32_t) * STATUS_WORDS, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+  const uint32_t clear[STATUS_WORDS] = {};
+  writeBuffer(r.status, clear, sizeof(clear));
 
   VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
   layoutInfo.setLayoutCount = 1;
@@ -156,8 +183,8 @@ void createRenderer(Renderer& r, const DeviceOptions& options) {
   VK_CHECK(vkCreatePipelineLayout(r.device.device, &layoutInfo, nullptr, &r.pipelineLayout));
 
   const VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1},
-                                        {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 6},
-                                        {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 2},
+                                        {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 7},
+                                        {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 5},
                                         {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, MAX_IMAGES}};
   VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
   poolInfo.maxSets = 1;
@@ -204,7 +231,7 @@ void destroyRenderer(Renderer& r) {
     vkDeviceWaitIdle(d);
     for (CachedPipeline& p : r.pipelines) vkDestroyPipeline(d, p.pipeline, nullptr);
     for (Buffer* b : {&r.frame, &r.spheres, &r.planes, &r.materials, &r.lights, &r.noise, &r.pixels,
-                      &r.accumulation})
+                      &r.accumulation, &r.tree, &r.treeStorage, &r.sphereStorage, &r.status})
       destroyBuffer(r.device, *b);
     destroyImage(r.device, r.display);
     destroyImages(r);
@@ -227,7 +254,7 @@ void uploadScene(Renderer& r, const GpuScene& s) {
   VK_CHECK(vkDeviceWaitIdle(r.device.device));
   // Whole blocks (buildGpuScene keeps to the MAX_* counts); the noise table even when unused.
   replaceUniformBuffer(r, r.frame, &s.frame, 1);
-  replaceUniformBuffer(r, r.spheres, s.spheres.data(), s.spheres.size(), MAX_SPHERES);
+  replaceSphereBuffers(r, s);
   replaceUniformBuffer(r, r.planes, s.planes.data(), s.planes.size(), MAX_PLANES);
   replaceUniformBuffer(r, r.materials, s.materials.data(), s.materials.size(), MAX_MATERIALS);
   replaceUniformBuffer(r, r.lights, s.lights.data(), s.lights.size(), MAX_LIGHTS);
@@ -252,18 +279,38 @@ void updateSceneBuffers(Renderer& r, const GpuScene& s) {
   VK_CHECK(vkDeviceWaitIdle(r.device.device));
   writeBuffer(r.frame, &s.frame, sizeof(s.frame));
   selectBand(r, r.bandFirstRow);
-  writeBuffer(r.spheres, s.spheres.data(), sizeof(gpu::Sphere) * s.spheres.size());
+  const bool storage = s.shape.sphereTree == SPHERE_TREE_STORAGE;
+  writeBuffer(storage ? r.sphereStorage : r.spheres, s.spheres.data(), sizeof(gpu::Sphere) * s.spheres.size());
+  writeBuffer(storage ? r.treeStorage : r.tree, s.treeNodes.data(), sizeof(gpu::BvhNode) * s.treeNodes.size());
   writeBuffer(r.planes, s.planes.data(), sizeof(gpu::Plane) * s.planes.size());
   writeBuffer(r.lights, s.lights.data(), sizeof(gpu::Light) * s.lights.size());
 }
 
 namespace {
 
-CachedPipeline& cachedPipeline(Renderer& r, const KernelKey& key) {
+// The key with the device's loop budget: lavapipe's limit, none elsewhere.
+KernelKey budgeted(const Renderer& r, KernelKey key) {
+  key.loopBudget = r.device.lavapipe ? uint32_t(kMaxLoopIterations) : 0u;
+  return key;
+}
+
+CachedPipeline& cachedPipeline(Renderer& r, const KernelKey& unbudgeted) {
+  const KernelKey key = budgeted(r, unbudgeted);
   for (CachedPipeline& p : r.pipelines)
     if (p.key == key) return p;
   r.pipelines.push_back({key, createTracePipeline(r.device, r.pipelineLayout, key), false});
   return r.pipelines.back();
+}
+
+// Throws LoopBudgetError if the last dispatch reported passing the loop budget (clearing it).
+void checkLoopBudget(Renderer& r) {
+  uint32_t* status = static_cast<uint32_t*>(r.status.data);
+  if (!(status[0] & STATUS_LOOP_BUDGET)) return;
+  status[0] = 0;
+  throw LoopBudgetError("the scene needs more than " + std::to_string(kMaxLoopIterations) +
+                        " loop passes (objects tested, boxes entered, lights, noise octaves, samples) for one "
+                        "group of 8 pixels, more than the lavapipe driver runs: use fewer lights, objects or "
+                        "samples per pixel, or another Vulkan device");
 }
 
 void bindAndDispatch(Renderer& r, VkCommandBuffer cmd, VkPipeline pipeline, uint32_t baseX, uint32_t groupsX,
@@ -277,14 +324,14 @@ void bindAndDispatch(Renderer& r, VkCommandBuffer cmd, VkPipeline pipeline, uint
 }  // namespace
 
 void preparePipeline(Renderer& r, const KernelKey& key) {
-  if (r.pipeline && r.pipelineKey == key) return;
+  if (r.pipeline && r.pipelineKey == budgeted(r, key)) return;
   r.pipeline = cachedPipeline(r, key).pipeline;
-  r.pipelineKey = key;
+  r.pipelineKey = budgeted(r, key);
 }
 
 bool pipelineWarm(const Renderer& r, const KernelKey& key) {
   for (const CachedPipeline& p : r.pipelines)
-    if (p.key == key) return p.dispatched;
+    if (p.key == budgeted(r, key)) return p.dispatched;
   return false;
 }
 
@@ -321,7 +368,13 @@ void renderFrame(Renderer& r) {
   bindAndDispatch(r, cmd, r.pipeline, 0, (r.width + WORKGROUP_X - 1) / WORKGROUP_X,
                   (bandHeight(r) + WORKGROUP_Y - 1) / WORKGROUP_Y);
   if (r.timestamps) vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, r.timestamps, 1);
+  VkMemoryBarrier toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER};  // the status word
+  toHost.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
+  toHost.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &toHost, 0,
+                       nullptr, 0, nullptr);
   submitAndWait(r.device, cmd);
+  checkLoopBudget(r);
   cachedPipeline(r, r.pipelineKey).dispatched = true;
   r.lastFrameMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   uint64_t ticks[2] = {0, 0};

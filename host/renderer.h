@@ -10,6 +10,12 @@
 #include <cstdint>
 #include <vector>
 
+// A dispatch whose loops passed the loop budget (common.h, SPEC_LOOP_BUDGET): part of its work
+// was not done, and its image is not to be used. A runtime failure, exit code 1.
+struct LoopBudgetError : VulkanError {
+  using VulkanError::VulkanError;
+};
+
 struct CachedPipeline {
   KernelKey key;
   VkPipeline pipeline = VK_NULL_HANDLE;
@@ -28,6 +34,10 @@ struct Renderer {
   std::vector<CachedPipeline> pipelines;  // every one created, kept for switching back
 
   Buffer frame, spheres, planes, materials, lights, noise;
+  // The sphere tree's nodes (uniform, a placeholder block without a tree) and, over the uniform
+  // blocks' sizes, its nodes and the spheres in storage buffers (else 16-byte placeholders).
+  Buffer tree, treeStorage, sphereStorage;
+  Buffer status;  // BINDING_STATUS: what the kernel reports (the loop budget), cleared per frame
   // The float image the host reads: width * height * 4 floats of linear radiance, written by
   // the kernel (BINDING_OUTPUT) or, progressive, by readbackFrame.
   Buffer pixels;
@@ -59,6 +69,8 @@ void uploadScene(Renderer& renderer, const GpuScene& scene);
 void updateSceneBuffers(Renderer& renderer, const GpuScene& scene);
 
 // Makes the pipeline specialised to `key` the current one, creating it unless created before.
+// On lavapipe every pipeline counts its loops against the driver's limit (key.loopBudget is set
+// here, for the device).
 void preparePipeline(Renderer& renderer, const KernelKey& key);
 
 // Whether the pipeline for `key` exists and has run (lavapipe compiles at the first dispatch).
@@ -77,7 +89,7 @@ void selectBand(Renderer& renderer, uint32_t firstRow);
 uint32_t bandHeight(const Renderer& renderer);
 
 // Dispatches the kernel over the selected band (the whole image when it is one); waits. Sets
-// lastFrameMs.
+// lastFrameMs. Throws LoopBudgetError if a group of pixels passed the loop budget (lavapipe).
 void renderFrame(Renderer& renderer);
 
 // Progressive pipelines: adds sample `index` (0 restarts) of the N x N grid to the running sums

@@ -1,6 +1,7 @@
 #include "scene_limits.h"
 
 #include "common.h"
+#include "gpu_tree.h"
 
 #include <algorithm>
 #include <string>
@@ -36,15 +37,20 @@ void checkSceneLimits(const Scene& scene) {
                      "the scene's objects use more than " + std::to_string(MAX_MATERIALS) + " materials");
 }
 
+size_t loopTestedObjects(const Scene& scene) {
+  const bool tree = sphereTreeFor(scene.spheres.size()) != SPHERE_TREE_NONE;
+  return scene.planes.size() + (tree ? 0 : scene.spheres.size());
+}
+
 void checkLoopLimit(const Scene& scene) {
-  const size_t objects = scene.spheres.size() + scene.planes.size();
-  const uint64_t iterations = loopIterationsPerSample(scene.lights.size(), objects);
+  const size_t objects = loopTestedObjects(scene);
+  const uint64_t iterations = loopIterationsPerSample(scene);
   if (iterations <= kMaxLoopIterations) return;
   // With n lights, (n + 1) (objects + 1) passes the limit from n = limit / (objects + 1) on.
   size_t first = std::min(std::max<size_t>(kMaxLoopIterations / (objects + 1), 1), scene.lights.size()) - 1;
   throw SceneError(scene.lights[first].loc,
                    "the scene has " + std::to_string(scene.lights.size()) + " lights and " + std::to_string(objects) +
-                       " objects: (lights + 1) x (objects + 1) = " + std::to_string(iterations) +
+                       " objects every ray tests: (lights + 1) x (objects + 1) = " + std::to_string(iterations) +
                        " intersection tests per sample, more than the " + std::to_string(kMaxLoopIterations) +
                        " the lavapipe driver runs");
 }

@@ -11,15 +11,22 @@
 // use more than MAX_MATERIALS materials.
 void checkSceneLimits(const Scene& scene);
 
-// Lavapipe ends a loop nest after 65535 iterations (its guard against endless loops): the rest
+// Lavapipe ends a kernel's loops after 65535 passes (its guard against endless loops): the rest
 // of the kernel's work is silently dropped (64 lights and 1024 spheres lost their shadow tests).
-// A sample's loops run about (lights + 1) x (objects + 1) times.
+// Its kernels count their passes against this budget and report passing it (common.h,
+// SPEC_LOOP_BUDGET). Before any render, a scene whose loops test every object is checked here:
+// a sample's loops then run about (lights + 1) x (objects + 1) times.
 constexpr uint64_t kMaxLoopIterations = 65000;
-inline uint64_t loopIterationsPerSample(size_t lights, size_t objects) {
-  return uint64_t(lights + 1) * uint64_t(objects + 1);
+
+// The objects a sample's loops test, each ray every one: the planes, and the spheres unless a
+// sphere tree bounds them (gpu_tree.h, sphereTreeFor).
+size_t loopTestedObjects(const Scene& scene);
+// About how many loop passes one sample makes where every ray tests every object it loops over.
+inline uint64_t loopIterationsPerSample(const Scene& scene) {
+  return uint64_t(scene.lights.size() + 1) * uint64_t(loopTestedObjects(scene) + 1);
 }
 
 // Throws SceneError (at the first light over) when a sample's loops pass kMaxLoopIterations.
 // Applies to lavapipe only; samples that together would pass it are dispatched one at a time
-// (headless.cpp).
+// (headless.cpp). A sphere tree's walks are counted while the kernel runs.
 void checkLoopLimit(const Scene& scene);

@@ -8,9 +8,11 @@
 
 #ifdef __cplusplus
 #include <cstdint>
+#include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 namespace gpu {
 using uint = uint32_t;
+using vec3 = glm::vec3;
 using vec4 = glm::vec4;
 using uvec4 = glm::uvec4;
 #endif
@@ -38,11 +40,17 @@ using uvec4 = glm::uvec4;
 #define BINDING_DISPLAY 9  // r32ui storage image: progressive rendering's mean as 8-bit sRGB in the
                            // swapchain's byte order (Frame.displayBgra), copied to the window
                            // without a blit (1 x 1 when not accumulating)
+// The sphere tree (SPEC_SPHERE_TREE): its nodes in a uniform block where they fit, else the
+// nodes and the spheres in storage buffers (placeholders where unused: the bindings exist).
+#define BINDING_TREE 10            // uniform BvhNode[MAX_UNIFORM_TREE_NODES]
+#define BINDING_TREE_STORAGE 11    // storage BvhNode[] (SPHERE_TREE_STORAGE)
+#define BINDING_SPHERE_STORAGE 12  // storage Sphere[] (SPHERE_TREE_STORAGE)
+#define BINDING_STATUS 13          // storage uint[STATUS_WORDS]: what the kernel reports to the host
 
 // What one render can hold: the uniform blocks' sizes, each within the 64 KiB of
 // maxUniformBufferRange on lavapipe and NVIDIA (buildGpuScene reports a scene over them).
 #define MAX_MATERIALS 256  // 256 * 112 bytes = 28 KiB
-#define MAX_SPHERES 1024   // 1024 * 64 bytes = 64 KiB
+#define MAX_UNIFORM_SPHERES 1024  // 1024 * 64 bytes = 64 KiB
 #define MAX_PLANES 256     // 256 * 144 bytes = 36 KiB
 #define MAX_LIGHTS 256     // 256 * 32 bytes = 8 KiB
 // Image files per scene: one combined image sampler each, picked by a switch over constant
@@ -50,6 +58,28 @@ using uvec4 = glm::uvec4;
 // minimum of maxPerStageDescriptorSamplers and maxPerStageDescriptorSampledImages, so every
 // device holds them.
 #define MAX_IMAGES 16
+// Spheres a scene may hold: over MAX_UNIFORM_SPHERES they are read from a storage buffer
+// through the sphere tree (8 MiB at the limit).
+#define MAX_SPHERES 131072
+
+// The sphere tree: a bounding volume hierarchy over the spheres (host/sphere_tree.h), walked in
+// the kernel instead of the loop over every sphere (shaders/sphere_tree.glsl).
+#define SPHERE_TREE_NONE 0     // the loop over every sphere
+#define SPHERE_TREE_UNIFORM 1  // nodes in BINDING_TREE, spheres in BINDING_SPHERES
+#define SPHERE_TREE_STORAGE 2  // nodes in BINDING_TREE_STORAGE, spheres in BINDING_SPHERE_STORAGE
+#define MAX_UNIFORM_TREE_NODES 2048  // 2048 * 32 bytes = 64 KiB: a tree over 1024 spheres
+#define TREE_LEAF_SIZE 4u            // spheres in a leaf, at most
+#define TREE_LEAF_SHIFT 24u          // BvhNode.spheres: count << TREE_LEAF_SHIFT | first
+// Scenes with at least this many spheres walk the tree (measured: docs/performance.md, "The
+// sphere tree"); fewer keep the loop, specialised to their count where it is small.
+#define SPHERE_TREE_MIN_SPHERES 12
+
+// Lavapipe ends a kernel's loops after 65 535 passes per SIMD group, counted over every loop of
+// the kernel, and silently drops the rest of its work. Kernels built with SPEC_LOOP_BUDGET > 0
+// count their loops' passes per group and, before the driver's limit, stop and set
+// STATUS_LOOP_BUDGET in BINDING_STATUS; the host reports it.
+#define STATUS_LOOP_BUDGET 1u  // bit of word 0: some group's loops passed the budget
+#define STATUS_WORDS 4
 
 // Texture kinds (Material.textureKind; one row each in host/texture_kinds.cpp, GLSL in
 // shaders/kinds/). Bit (1 << kind) of SPEC_SPHERE_TEXTURE_KINDS and
@@ -82,6 +112,8 @@ using uvec4 = glm::uvec4;
 #define SPEC_LIGHT_COUNT 7
 #define SPEC_TEXTURE_PLACEMENT 10  // false: no object's placement needs the kernel (mapping.glsl)
 #define SPEC_IMAGE_COUNT 11  // image files the scene's objects use (switch cases past it compile out)
+#define SPEC_SPHERE_TREE 12  // SPHERE_TREE_*
+#define SPEC_LOOP_BUDGET 13  // loop passes a SIMD group may make (0: not counted)
 
 // Scenes with at most this many spheres, planes or lights get kernels with the count
 // built in (the loops over them unrolled); larger ones loop to Frame's count. On lavapipe a
@@ -167,7 +199,7 @@ struct Frame {
   // whose vec4s pass maxStorageBufferRange is rendered band after band (renderer.h, selectBand).
   uint rowOffset;
   uint bandRows;
-  uint pad0;
+  uint treeNodeCount;  // nodes of the sphere tree (SPEC_SPHERE_TREE)
   uint pad1;
 };
 
@@ -226,6 +258,18 @@ struct Light {
   vec4 color;     // rgb
 };
 
+// A node of the sphere tree, depth first from the root at 0. The box holds every sphere below,
+// camera-relative and rounded outward. A walk enters the box or goes on at `next`, the node
+// after this one's subtree (no stack); an inner node's first child is the next node, ordered
+// nearer the camera first. spheres: a leaf's count << TREE_LEAF_SHIFT | its first sphere (its
+// spheres are consecutive), 0 for an inner node.
+struct BvhNode {
+  vec3 lo;
+  uint next;
+  vec3 hi;
+  uint spheres;
+};
+
 // Entry i holds perm[i] | perm[i + 1] << 16 (perm: the 256-entry permutation repeated, so
 // perm[512] = perm[0]): one load gives both corners along an axis, and Perlin's 14 table
 // lookups per noise value become 7. Lavapipe gathers them one lane at a time.
@@ -239,6 +283,9 @@ static_assert(sizeof(Sphere) == 64, "Sphere layout");
 static_assert(sizeof(Plane) == 144, "Plane layout");
 static_assert(sizeof(Material) == 112, "Material layout");
 static_assert(sizeof(Light) == 32, "Light layout");
+static_assert(sizeof(BvhNode) == 32, "BvhNode layout");
+static_assert(MAX_UNIFORM_TREE_NODES >= 2 * MAX_UNIFORM_SPHERES - 1, "a tree over the uniform spheres fits its block");
+static_assert(MAX_SPHERES < (1u << TREE_LEAF_SHIFT), "BvhNode.spheres holds a first sphere");
 static_assert(sizeof(NoiseTable) == NOISE_PERM_SIZE * 4, "NoiseTable layout");
 static_assert(sizeof(Sphere) / 4 <= BAKED_SPHERE_STRIDE && sizeof(Plane) / 4 <= BAKED_PLANE_STRIDE &&
                   sizeof(Light) / 4 <= BAKED_LIGHT_STRIDE && sizeof(Material) / 4 <= BAKED_MATERIAL_STRIDE &&

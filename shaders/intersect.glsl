@@ -35,24 +35,41 @@ float intersectPlane(vec3 o, vec3 dir, vec4 normalDistance, float tMin, float tM
   return (t > tMin && t < tMax) ? t : -1.0;
 }
 
+#include "sphere_tree.glsl"
+
+// The closest hit. With a sphere tree the planes come first: their nearest hit bounds the
+// boxes the walk enters (a floor hides the spheres beyond it). Loops bounded by Frame's counts
+// count their passes (loop_budget.glsl); those over constants are unrolled.
 Hit closestHit(vec3 o, vec3 d) {
   Hit hit = Hit(T_MAX, HIT_NONE, 0u);
-  for (uint i = 0u; i < sphereCount(); ++i) {
-    float t = intersectSphere(o, d, sphereAt(i).centerRadius, 0.0, hit.t);
-    if (t > 0.0) hit = Hit(t, HIT_SPHERE, i);
+  if (SPHERE_TREE == SPHERE_TREE_NONE) {
+    for (uint i = 0u; i < sphereCount(); ++i) {
+      float t = intersectSphere(o, d, sphereAt(i).centerRadius, 0.0, hit.t);
+      if (t > 0.0) hit = Hit(t, HIT_SPHERE, i);
+    }
+    if (SPHERE_COUNT == COUNT_FROM_FRAME) countLoop(sphereCount());
   }
   for (uint i = 0u; i < planeCount(); ++i) {
     float t = intersectPlane(o, d, planeAt(i).normalDistance, 0.0, hit.t);
     if (t > 0.0) hit = Hit(t, HIT_PLANE, i);
   }
+  if (PLANE_COUNT == COUNT_FROM_FRAME) countLoop(planeCount());
+  if (SPHERE_TREE != SPHERE_TREE_NONE) closestSphereInTree(o, d, hit);
   return hit;
 }
 
-// True if anything lies on the segment from o along unit d before distance tMax.
-bool occluded(vec3 o, vec3 d, float tMax) {
-  for (uint i = 0u; i < sphereCount(); ++i)
+// True if anything lies on the segment from o along unit d before distance tMax. `passes`: the
+// loops' passes for the caller to count (loop_budget.glsl) where the lanes meet again: a lane
+// that returns early passed no later loop, so the busiest lane's sum is the group's.
+bool occluded(vec3 o, vec3 d, float tMax, out uint passes) {
+  passes = 1u;  // a masked pass of the second loop (countLoop adds one)
+  for (uint i = 0u; SPHERE_TREE == SPHERE_TREE_NONE && i < sphereCount(); ++i) {
+    ++passes;
     if (intersectSphere(o, d, sphereAt(i).centerRadius, 0.0, tMax) > 0.0) return true;
-  for (uint i = 0u; i < planeCount(); ++i)
+  }
+  for (uint i = 0u; i < planeCount(); ++i) {
+    ++passes;
     if (intersectPlane(o, d, planeAt(i).normalDistance, 0.0, tMax) > 0.0) return true;
-  return false;
+  }
+  return SPHERE_TREE != SPHERE_TREE_NONE && occludedInTree(o, d, tMax);
 }

@@ -74,11 +74,16 @@ vec3 shade(Surface s, Material m, vec3 albedo, vec3 toEye) {
     vec3 l = toLight / dist;
     float nDotL = dot(s.n, l);
     if (nDotL <= 0.0) continue;
-    if (occluded(origin, l, dist)) continue;
+    uint passes;
+    bool shadowed = occluded(origin, l, dist, passes);
+    if ((SPHERE_TREE == SPHERE_TREE_NONE && SPHERE_COUNT == COUNT_FROM_FRAME) || PLANE_COUNT == COUNT_FROM_FRAME)
+      countLoop(passes);
+    if (shadowed) continue;
     vec3 r = reflect(-l, s.n);
     float rDotV = max(dot(r, toEye), 0.0);
     vec3 specular = rDotV > 0.0 ? m.specular.rgb * pow(rDotV, m.specular.w) : vec3(0.0);
     color += lightAt(i).color.rgb * min(albedo * nDotL + specular, vec3(RADIANCE_LIMIT));
   }
+  if (LIGHT_COUNT == COUNT_FROM_FRAME) countLoop(lightCount());
   return min(color, vec3(RADIANCE_LIMIT));
 }

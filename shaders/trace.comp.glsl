@@ -5,6 +5,8 @@
 // with RAYTEX_DEBUG_OUTPUT, the outputs the tests compare with the CPU reference.
 #version 460
 #extension GL_GOOGLE_include_directive : require
+#extension GL_KHR_shader_subgroup_basic : require
+#extension GL_KHR_shader_subgroup_arithmetic : require
 
 #include "common.h"
 
@@ -27,10 +29,12 @@ layout(constant_id = SPEC_PROGRESSIVE) const bool PROGRESSIVE = false;
 layout(constant_id = SPEC_BAKED) const bool BAKED = false;
 layout(constant_id = SPEC_TEXTURE_PLACEMENT) const bool TEXTURE_PLACEMENT = true;
 layout(constant_id = SPEC_BAKED_MATERIAL_COUNT) const uint BAKED_MATERIAL_COUNT = 1u;
+layout(constant_id = SPEC_SPHERE_TREE) const uint SPHERE_TREE = SPHERE_TREE_NONE;
+layout(constant_id = SPEC_LOOP_BUDGET) const uint LOOP_BUDGET = 0u;
 
 layout(std430, binding = BINDING_OUTPUT) writeonly buffer OutputBlock { vec4 outputPixels[]; };
 layout(std140, binding = BINDING_FRAME) uniform FrameBlock { Frame frameBlock; };
-layout(std140, binding = BINDING_SPHERES) uniform SphereBlock { Sphere sphereBlock[MAX_SPHERES]; };
+layout(std140, binding = BINDING_SPHERES) uniform SphereBlock { Sphere sphereBlock[MAX_UNIFORM_SPHERES]; };
 layout(std140, binding = BINDING_PLANES) uniform PlaneBlock { Plane planeBlock[MAX_PLANES]; };
 layout(std140, binding = BINDING_MATERIALS) uniform MaterialBlock { Material materials[MAX_MATERIALS]; };
 layout(std140, binding = BINDING_LIGHTS) uniform LightBlock { Light lightBlock[MAX_LIGHTS]; };
@@ -38,6 +42,10 @@ layout(std140, binding = BINDING_NOISE) uniform NoiseBlock { NoiseTable noiseTab
 layout(binding = BINDING_IMAGES) uniform sampler2D images[MAX_IMAGES];
 layout(std430, binding = BINDING_ACCUMULATION) buffer AccumulationBlock { vec4 accumulation[]; };
 layout(binding = BINDING_DISPLAY, r32ui) uniform writeonly uimage2D displayImage;
+layout(std140, binding = BINDING_TREE) uniform TreeBlock { BvhNode treeBlock[MAX_UNIFORM_TREE_NODES]; };
+layout(std430, binding = BINDING_TREE_STORAGE) readonly buffer TreeStorage { BvhNode treeStorage[]; };
+layout(std430, binding = BINDING_SPHERE_STORAGE) readonly buffer SphereStorage { Sphere sphereStorage[]; };
+layout(std430, binding = BINDING_STATUS) buffer StatusBlock { uint status[STATUS_WORDS]; };
 
 #include "baked.glsl"
 
@@ -77,6 +85,7 @@ void cacheScene() {
 // Item i; i may differ between invocations (a hit's index): a cached item is then picked
 // with selects, since lavapipe indexes a private array per lane through memory.
 Sphere sphereAt(uint i) {
+  if (SPHERE_TREE == SPHERE_TREE_STORAGE) return sphereStorage[i];
   if (SPHERE_COUNT == COUNT_FROM_FRAME) return sphereBlock[i];
   Sphere s = sphereCache[0];
   for (uint k = 1u; k < SPHERE_CACHE; ++k)
@@ -116,6 +125,7 @@ uint lightCount() { return LIGHT_COUNT == COUNT_FROM_FRAME ? frame.lightCount : 
 const bool SPHERE_LAT_LONG = ((SPHERE_TEXTURE_KINDS & TEX_2D_KINDS) | uint(OUTPUT_MODE == OUTPUT_COORDS)) != 0u;
 
 #include "noise.glsl"
+#include "loop_budget.glsl"
 #include "mapping.glsl"
 #include "intersect.glsl"
 #include "shading.glsl"
@@ -246,6 +256,11 @@ void main() {
   // docs/performance.md, "One trace per kernel".)
   uint k = PROGRESSIVE ? frame.sampleIndex : 0u;
   sum += radiance(origin, vec2(pixel) + (vec2(k % n, k / n) + 0.5) / float(n), 1.0 / float(n));
+#endif
+#ifdef RAYTEX_SUPERSAMPLE
+  checkLoopBudget(n * n);
+#else
+  checkLoopBudget(1u);
 #endif
   if (PROGRESSIVE) {
     if (inside) {

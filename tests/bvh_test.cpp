@@ -1,6 +1,7 @@
 // The sphere BVH: its structure, and closest hits through it against testing every sphere
 // (no device).
 #include "bvh.h"
+#include "gpu_tree.h"
 #include "reference.h"
 
 #include <glm/geometric.hpp>
@@ -105,3 +106,77 @@ TEST(Bvh, SpheresAtOnePointAndNoSpheres) {
 }
 
 }  // namespace
+
+// The tree as the kernel walks it (gpu_tree.h), laid out for a camera at the origin.
+namespace {
+
+std::vector<gpu::Sphere> packedAroundOrigin(const Scene& scene) {
+  std::vector<gpu::Sphere> packed;
+  for (uint32_t i = 0; i < scene.spheres.size(); ++i) {
+    gpu::Sphere s{};
+    s.centerRadius = glm::vec4(glm::vec3(scene.spheres[i].center), float(scene.spheres[i].radius));
+    s.material = i;  // which sphere it is, to follow the reordering
+    packed.push_back(s);
+  }
+  return packed;
+}
+
+// Checks node `node`'s subtree: boxes hold their spheres' float boxes and their children's,
+// `next` is the node after the subtree, the nearer child first; returns the spheres' ids.
+std::vector<uint32_t> checkLaidOut(const std::vector<gpu::BvhNode>& nodes, const std::vector<gpu::Sphere>& spheres,
+                                   uint32_t node) {
+  const gpu::BvhNode& n = nodes[node];
+  std::vector<uint32_t> ids;
+  const uint32_t count = n.spheres >> TREE_LEAF_SHIFT;
+  if (count > 0) {
+    EXPECT_LE(count, TREE_LEAF_SIZE);
+    EXPECT_EQ(n.next, node + 1);
+    for (uint32_t k = 0; k < count; ++k) {
+      const gpu::Sphere& s = spheres[(n.spheres & ((1u << TREE_LEAF_SHIFT) - 1)) + k];
+      for (int a = 0; a < 3; ++a) {
+        EXPECT_LT(n.lo[a], s.centerRadius[a] - s.centerRadius.w);
+        EXPECT_GT(n.hi[a], s.centerRadius[a] + s.centerRadius.w);
+      }
+      ids.push_back(s.material);
+    }
+    return ids;
+  }
+  const uint32_t first = node + 1, second = nodes[first].next;
+  EXPECT_LT(second, n.next);
+  for (uint32_t child : {first, second})
+    for (int a = 0; a < 3; ++a) {
+      EXPECT_LE(n.lo[a], nodes[child].lo[a]);
+      EXPECT_GE(n.hi[a], nodes[child].hi[a]);
+    }
+  auto distance = [&](uint32_t c) { return glm::length(glm::dvec3(nodes[c].lo) + glm::dvec3(nodes[c].hi)); };
+  EXPECT_LE(distance(first), distance(second));
+  ids = checkLaidOut(nodes, spheres, first);
+  std::vector<uint32_t> more = checkLaidOut(nodes, spheres, second);
+  EXPECT_EQ(nodes[second].next, n.next);
+  ids.insert(ids.end(), more.begin(), more.end());
+  return ids;
+}
+
+}  // namespace
+
+TEST(GpuTree, LayoutHoldsEverySphereOnceNearerChildFirstWithSkipLinks) {
+  const Scene scene = randomSpheres(3000, 30.0, 8);
+  const SphereBvh bvh = buildSphereBvh(scene.spheres);
+  std::vector<gpu::Sphere> spheres = packedAroundOrigin(scene);
+  std::vector<gpu::BvhNode> nodes;
+  layoutSphereTree(bvh, spheres, nodes);
+  ASSERT_EQ(nodes.size(), bvh.nodes.size());
+  ASSERT_EQ(spheres.size(), scene.spheres.size());
+  EXPECT_EQ(nodes[0].next, nodes.size());
+  std::vector<uint32_t> ids = checkLaidOut(nodes, spheres, 0);
+  std::sort(ids.begin(), ids.end());
+  ASSERT_EQ(ids.size(), scene.spheres.size());
+  for (uint32_t i = 0; i < ids.size(); ++i) EXPECT_EQ(ids[i], i);
+}
+
+TEST(GpuTree, FewSpheresKeepTheLoopAndManyGoToStorage) {
+  EXPECT_EQ(sphereTreeFor(SPHERE_TREE_MIN_SPHERES - 1), uint32_t(SPHERE_TREE_NONE));
+  EXPECT_EQ(sphereTreeFor(SPHERE_TREE_MIN_SPHERES), uint32_t(SPHERE_TREE_UNIFORM));
+  EXPECT_EQ(sphereTreeFor(MAX_UNIFORM_SPHERES), uint32_t(SPHERE_TREE_UNIFORM));
+  EXPECT_EQ(sphereTreeFor(MAX_UNIFORM_SPHERES + 1), uint32_t(SPHERE_TREE_STORAGE));
+}

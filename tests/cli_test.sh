@@ -156,36 +156,60 @@ check deterministic-default cmp -s "$tmp/same-1.png" "$tmp/same-2.png"
 check deterministic-marble-image cmp -s "$tmp/marble-1.png" "$tmp/marble-2.png"
 check deterministic-differs bash -c "! cmp -s '$tmp/same-1.png' '$tmp/marble-1.png'"
 
-# Lavapipe ends a loop nest after 65535 iterations: 54 lights (53 dark) and 300 objects at 4 spp
-# would pass it in one dispatch, so the samples go one per dispatch. The image equals the one
-# with the lit light alone (there, all 4 samples in one dispatch).
+# Lavapipe ends a kernel's loops after 65535 passes. A scene whose rays test every object (267:
+# 256 planes, 255 of them below the floor, and 11 spheres, too few for a sphere tree) with 60
+# lights (59 dark) at 4 spp would pass it in one dispatch, so the samples go one per dispatch.
+# The image equals the one with the lit light alone (there, all 4 samples in one dispatch).
 manyLights() {  # manyLights DARK_LIGHTS
   echo 'camera { eye = (0, 3, 12); lookat = (0, -0.5, 0); }'
   for _ in $(seq "$1"); do echo 'light { position = (0, 10, 6); color = (0, 0, 0); }'; done
   echo 'light { position = (-6, 10, 6); color = (1, 1, 1); }'
-  for _ in $(seq 298); do echo 'sphere { center = (0, 0, 40); radius = 1; }'; done
+  for _ in $(seq 10); do echo 'sphere { center = (0, 0, 40); radius = 1; }'; done
   echo 'sphere { center = (0, 0, 0); radius = 2; }'
+  for _ in $(seq 255); do echo 'plane { normal = (0, 1, 0); distance = -50; }'; done
   echo 'plane { normal = (0, 1, 0); distance = -2; }'
 }
-manyLights 53 >"$tmp/lights54.cfg"
+manyLights 59 >"$tmp/lights60.cfg"
 manyLights 0 >"$tmp/lights1.cfg"
-for n in 54 1; do
+for n in 60 1; do
   "$raytex" render "$tmp/lights$n.cfg" --width 32 --height 24 --spp 4 -o "$tmp/lights$n.png" >/dev/null 2>&1
 done
-check loop-limit-per-sample cmp -s "$tmp/lights54.png" "$tmp/lights1.png"
-# Over the limit in one sample (215 lights, 300 objects): refused on lavapipe after device
+check loop-limit-per-sample cmp -s "$tmp/lights60.png" "$tmp/lights1.png"
+# Over the limit in one sample (242 lights, 267 objects): refused on lavapipe after device
 # selection, at the first light over; the CPU reference has no such limit.
-manyLights 214 >"$tmp/lights215.cfg"
-expect loop-limit-lavapipe 2 "^$tmp/lights215.cfg:216:1: the scene has 215 lights and 300 objects: .* the lavapipe driver runs\$" \
-  -- "$raytex" render "$tmp/lights215.cfg" --width 8 --height 6 -o "$tmp/lights215.png"
-expect loop-limit-reference 0 '' -- "$raytex" render "$tmp/lights215.cfg" --reference --width 8 --height 6 \
-  -o "$tmp/lights215-reference.png"
+manyLights 241 >"$tmp/lights242.cfg"
+expect loop-limit-lavapipe 2 "^$tmp/lights242.cfg:243:1: the scene has 242 lights and 267 objects every ray tests: .* the lavapipe driver runs\$" \
+  -- "$raytex" render "$tmp/lights242.cfg" --width 8 --height 6 -o "$tmp/lights242.png"
+expect loop-limit-reference 0 '' -- "$raytex" render "$tmp/lights242.cfg" --reference --width 8 --height 6 \
+  -o "$tmp/lights242-reference.png"
+# A sphere tree's walks are counted while the kernel runs (shaders/loop_budget.glsl). One pixel
+# looks along a row of N small spheres to a wall, the light behind the camera: the ray misses
+# every sphere but enters every box of the tree (the spheres alternate above and below it), and
+# so does the shadow ray back from the wall. With 100000 spheres the two walks pass the limit
+# (exit 1, nothing written); with 2000, one light passes far below it, and 256 lights pass it.
+sphereRow() {  # sphereRow SPHERES LIGHTS
+  echo 'camera { eye = (-1, 0, 0); lookat = (1, 0, 0); up = (0, 1, 0); fov = 10; }'
+  echo 'ambient_light = (0, 0, 0);'
+  for _ in $(seq "$2"); do echo 'light { position = (-2, 0, 0); color = (0.004, 0.004, 0.004); }'; done
+  awk -v n="$1" 'BEGIN { for (i = 0; i < n; ++i) printf "sphere { center = (%g, %g, 0); radius = 0.1; }\n", 0.3 * i, i % 2 ? 0.2 : -0.2 }'
+  echo "plane { normal = (-1, 0, 0); distance = $(awk -v n="$1" 'BEGIN { print -(0.3 * n + 1) }'); }"
+}
+budget='^raytex: the scene needs more than 65000 loop passes .* for one group of 8 pixels, more than the lavapipe driver runs: .*$'
+sphereRow 100000 1 >"$tmp/row100000.cfg"
+expect loop-budget-one-light 1 "$budget" -- "$raytex" render "$tmp/row100000.cfg" --width 1 --height 1 -o "$tmp/row100000.png"
+check loop-budget-nothing-written test ! -e "$tmp/row100000.png"
+sphereRow 2000 256 >"$tmp/row2000-256.cfg"
+expect loop-budget-256-lights 1 "$budget" -- "$raytex" render "$tmp/row2000-256.cfg" --width 1 --height 1 -o "$tmp/row.png"
+sphereRow 2000 1 >"$tmp/row2000-1.cfg"
+expect loop-budget-within 0 '' -- "$raytex" render "$tmp/row2000-1.cfg" --width 1 --height 1 -o "$tmp/row2000-1.png"
+"$raytex" render "$tmp/row2000-1.cfg" --reference --width 1 --height 1 -o "$tmp/row2000-1-reference.png" >/dev/null 2>&1
+check loop-budget-within-matches-reference cmp -s "$tmp/row2000-1.png" "$tmp/row2000-1-reference.png"
 # Object counts are the scene model's: the same error from the GPU path and the reference.
-for _ in $(seq 1025); do echo 'sphere { radius = 1; }'; done >"$tmp/spheres1025.cfg"
+awk 'BEGIN { for (i = 0; i <= 131072; ++i) print "sphere { radius = 1; }" }' >"$tmp/spheres131073.cfg"
 for command in render "render --reference"; do
   # shellcheck disable=SC2086  # the command's words
-  expect "sphere-limit-${command// /-}" 2 "^$tmp/spheres1025.cfg:1025:1: the scene has 1025 spheres; raytex renders at most 1024\$" \
-    -- "$raytex" $command "$tmp/spheres1025.cfg" --width 8 --height 6 -o "$tmp/spheres1025.png"
+  expect "sphere-limit-${command// /-}" 2 "^$tmp/spheres131073.cfg:131073:1: the scene has 131073 spheres; raytex renders at most 131072\$" \
+    -- "$raytex" $command "$tmp/spheres131073.cfg" --width 8 --height 6 -o "$tmp/spheres131073.png"
 done
 
 # Image files are checked from their headers before anything is decoded: a budget of 1 MiB

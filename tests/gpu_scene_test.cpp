@@ -258,21 +258,23 @@ TEST(GpuScene, MoreObjectsOrLightsThanTheKernelHoldsIsASceneError) {
 }
 
 TEST(SceneLimits, MoreIntersectionTestsPerSampleThanLavapipeLoopsOverIsASceneError) {
-  // 300 objects: 214 lights are fine ((214 + 1) x 301 = 64715), the 215th is over (65016).
+  // 256 planes and 11 spheres (too few for a sphere tree): 241 lights are fine ((241 + 1) x 268
+  // = 64856), the 242nd is over (65124).
   std::string text;
-  for (int i = 0; i < 300; ++i) text += "sphere { center = (" + std::to_string(i) + ", 0, 0); radius = 0.5; }\n";
-  for (int i = 0; i < 214; ++i) text += "light { position = (0, 10, 0); color = (0.001, 0.001, 0.001); }\n";
+  for (int i = 0; i < 256; ++i) text += "plane { normal = (0, 1, 0); distance = " + std::to_string(-i) + "; }\n";
+  for (int i = 0; i < 11; ++i) text += "sphere { center = (" + std::to_string(i) + ", 0, 0); radius = 0.5; }\n";
+  for (int i = 0; i < 241; ++i) text += "light { position = (0, 10, 0); color = (0.001, 0.001, 0.001); }\n";
   EXPECT_NO_THROW(checkLoopLimit(parseSceneText(text, "pairs.cfg")));
   text += "light { position = (0, 10, 0); }\n";
   Scene scene = parseSceneText(text, "pairs.cfg");
   EXPECT_NO_THROW(buildGpuScene(scene, 8, 8));  // a limit of one driver, checked with the device
   try {
     checkLoopLimit(scene);
-    ADD_FAILURE() << "no error for 215 lights and 300 objects";
+    ADD_FAILURE() << "no error for 242 lights and 267 objects";
   } catch (const SceneError& e) {
-    EXPECT_EQ(std::string(e.what()), "pairs.cfg:515:1: the scene has 215 lights and 300 objects: (lights + 1) x "
-                                     "(objects + 1) = 65016 intersection tests per sample, more than the 65000 the "
-                                     "lavapipe driver runs");
+    EXPECT_EQ(std::string(e.what()), "pairs.cfg:509:1: the scene has 242 lights and 267 objects every ray tests: "
+                                     "(lights + 1) x (objects + 1) = 65124 intersection tests per sample, more than "
+                                     "the 65000 the lavapipe driver runs");
   }
 }
 

@@ -119,7 +119,8 @@ TEST_F(SpecialisationTest, CountsAtAndOverTheLimitMatch) {
   }
 }
 
-// Scenes that fill one of the kernel's uniform blocks (MAX_SPHERES, MAX_PLANES, MAX_LIGHTS):
+// Scenes that fill one of the kernel's uniform blocks (MAX_UNIFORM_SPHERES, MAX_PLANES, MAX_LIGHTS),
+// or hold the most spheres (MAX_SPHERES, in storage buffers):
 // the items before the last are out of view (behind the camera) or dark, so the centre pixel
 // is the last sphere, lit by the last light, over the last plane. (One block at a time: on
 // lavapipe a loop nest stops after 65535 iterations, and MAX_LIGHTS shadow rays each testing
@@ -138,6 +139,7 @@ TEST_F(SpecialisationTest, FullBlocksRenderTheirLastItems) {
   const std::string hiddenPlane = "plane { normal = (0, 0, 1); distance = 40; aChecker; }";
   const std::string scenes[] = {
       header() + repeat(MAX_LIGHTS - 1, darkLight) + light + sphere + plane,
+      header() + light + repeat(MAX_UNIFORM_SPHERES - 1, hiddenSphere) + sphere + plane,
       header() + light + repeat(MAX_SPHERES - 1, hiddenSphere) + sphere + plane,
       header() + light + sphere + repeat(MAX_PLANES - 1, hiddenPlane) + plane,
   };

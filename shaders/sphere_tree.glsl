@@ -1,0 +1,74 @@
+// Walks of the sphere tree (common.h, BvhNode; laid out by host/gpu_tree.cpp): a ray tests the
+// spheres of the leaves whose boxes it enters, not every sphere. The walk needs no stack: it
+// enters a box's first child, or skips the subtree to the node's `next`; both move forwards, so
+// a walk makes at most one pass per node and always ends. Included by intersect.glsl.
+
+BvhNode treeNodeAt(uint i) {
+  if (SPHERE_TREE == SPHERE_TREE_STORAGE) return treeStorage[i];
+  return treeBlock[i];
+}
+
+// 1 / d, its zero components replaced by a tiny one: the slab distances are then never
+// 0 * inf (NaN), and an axis the ray runs along bounds nothing unless the origin is outside it.
+vec3 slabInverse(vec3 d) { return 1.0 / mix(d, vec3(1.0e-30), equal(d, vec3(0.0))); }
+
+// Whether the ray enters the node's box at some t in [0, tMax]. The distances are widened by far
+// more than their rounding (a few float steps), so that a sphere the ray hits is never skipped.
+bool entersBox(BvhNode n, vec3 o, vec3 inverse, float tMax) {
+  const float widen = 1.0 / 1048576.0;
+  vec3 t0 = (n.lo - o) * inverse, t1 = (n.hi - o) * inverse;
+  vec3 near = min(t0, t1), far = max(t0, t1);
+  float enter = max(max(near.x, near.y), max(near.z, 0.0));
+  float leave = min(min(far.x, far.y), far.z);
+  return enter - enter * widen <= min(leave + abs(leave) * widen, tMax);
+}
+
+uint leafCount(BvhNode n) { return n.spheres >> TREE_LEAF_SHIFT; }
+uint leafFirst(BvhNode n) { return n.spheres & ((1u << TREE_LEAF_SHIFT) - 1u); }
+
+// The closest sphere hit nearer than hit.t, into hit.
+void closestSphereInTree(vec3 o, vec3 d, inout Hit hit) {
+  vec3 inverse = slabInverse(d);
+  uint node = 0u, passes = 0u;
+  // A do-while: lavapipe leaves a loop only when no lane is left, and a for loop's test at
+  // the top adds one pass with every lane masked off (the tree has a node: it has spheres).
+  do {
+    ++passes;
+    BvhNode n = treeNodeAt(node);
+    bool enters = entersBox(n, o, inverse, hit.t);
+    uint count = leafCount(n);
+    if (enters && count > 0u) {
+      uint first = leafFirst(n);
+      for (uint k = 0u; k < TREE_LEAF_SIZE; ++k) {
+        if (k < count) {
+          float t = intersectSphere(o, d, sphereAt(first + k).centerRadius, 0.0, hit.t);
+          if (t > 0.0) hit = Hit(t, HIT_SPHERE, first + k);
+        }
+      }
+    }
+    node = enters && count == 0u ? node + 1u : n.next;
+  } while (node < frame.treeNodeCount);
+  countLoop(passes);
+}
+
+// True if a sphere lies on the segment from o along unit d before distance tMax.
+bool occludedInTree(vec3 o, vec3 d, float tMax) {
+  vec3 inverse = slabInverse(d);
+  uint node = 0u;
+  uint passes = 0u;
+  bool blocked = false;
+  do {
+    ++passes;
+    BvhNode n = treeNodeAt(node);
+    bool enters = entersBox(n, o, inverse, tMax);
+    uint count = leafCount(n);
+    if (enters && count > 0u) {
+      uint first = leafFirst(n);
+      for (uint k = 0u; k < TREE_LEAF_SIZE; ++k)
+        if (k < count && intersectSphere(o, d, sphereAt(first + k).centerRadius, 0.0, tMax) > 0.0) blocked = true;
+    }
+    node = blocked ? frame.treeNodeCount : (enters && count == 0u ? node + 1u : n.next);
+  } while (node < frame.treeNodeCount);
+  countLoop(passes);
+  return blocked;
+}

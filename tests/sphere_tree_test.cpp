@@ -1,0 +1,154 @@
+// The sphere tree (shaders/sphere_tree.glsl, host/gpu_tree.cpp) on the device: within the
+// uniform blocks' sizes it renders exactly what the loop over every sphere renders, from any
+// camera; over them (spheres and nodes in storage buffers) it hits what the float64
+// reference hits.
+#include "gpu_fixture.h"
+#include "gpu_scene.h"
+#include "parser.h"
+#include "reference.h"
+#include "texture_kinds.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <string>
+
+namespace {
+
+const std::string kSourceDir = RAYTEX_SOURCE_DIR;
+
+// A field of `n` small spheres of the course's materials on the checker floor, as
+// bench/sphere_field.py makes them, seen from `eye`.
+Scene field(int n, const std::string& eye, const std::string& lookat = "(0, -1.5, -6)") {
+  std::mt19937 rng{uint32_t(n)};
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const char* materials[] = {"anImage", "aChecker", "aSolidChecker", "aNoise", "aMarble", "aWood", "aTurbulence",
+                             "aDturbulence"};
+  const double side = 2.0 * std::sqrt(double(n));
+  std::string text = "#include \"texture_include.cfg\"\n"
+                     "camera { eye = " + eye + "; lookat = " + lookat + "; up = (0, 1, 0); fov = 35; }\n"
+                     "light { position = (-6, 10, 6); color = (1, 1, 1); }\n"
+                     "plane { normal = (0, 1, 0); distance = -2; tex_scale = 5; aChecker; }\n";
+  for (int i = 0; i < n; ++i) {
+    const double r = 0.1 + 0.2 * unit(rng);
+    const double x = (unit(rng) - 0.5) * side, z = -unit(rng) * side;
+    text += "sphere { center = (" + std::to_string(x) + ", " + std::to_string(-2.0 + r) + ", " + std::to_string(z) +
+            "); radius = " + std::to_string(r) + "; " + materials[i % 8] + "; }\n";
+  }
+  return parseSceneText(text, kSourceDir + "/scenes/sphere-tree-test.cfg");
+}
+
+class SphereTreeTest : public RenderTest {
+ protected:
+  // Renders `g` (uploaded as is) with its own kernel, or with the loop over every sphere.
+  std::vector<float> renderPacked(const GpuScene& g, uint32_t mode, uint32_t filter) {
+    uploadScene(*renderer_, g);
+    KernelOptions kernel;
+    kernel.outputMode = mode;
+    kernel.filterBox = filter == FILTER_BOX;
+    preparePipeline(*renderer_, kernelKey(g, kernel));
+    renderFrame(*renderer_);
+    readbackFrame(*renderer_);
+    const float* pixels = framePixels(*renderer_);
+    return std::vector<float>(pixels, pixels + size_t(g.frame.width) * g.frame.height * 4);
+  }
+
+  // The scene packed for the loop over every sphere (in the scene's order, no tree).
+  static GpuScene withoutTree(GpuScene g, const Scene& scene) {
+    g.shape.sphereTree = SPHERE_TREE_NONE;
+    g.treeNodes.clear();
+    packCamera(g, scene, g.frame.width, g.frame.height);
+    return g;
+  }
+
+  // Floats that differ between the tree's image and the loop's.
+  size_t differences(const Scene& scene, uint32_t mode, uint32_t filter, uint32_t w, uint32_t h) {
+    const GpuScene tree = buildGpuScene(scene, w, h);
+    EXPECT_NE(tree.shape.sphereTree, uint32_t(SPHERE_TREE_NONE));
+    std::vector<float> a = renderPacked(tree, mode, filter);
+    std::vector<float> b = renderPacked(withoutTree(tree, scene), mode, filter);
+    size_t n = 0;
+    for (size_t i = 0; i < a.size(); ++i) n += a[i] != b[i];
+    return n;
+  }
+};
+
+TEST_F(SphereTreeTest, RendersWhatTheLoopOverEverySphereRenders) {
+  // The bench's view, orbiting views (some looking back over the field, the light behind), a
+  // view from low down along the floor and one from inside a sphere.
+  const std::string eyes[] = {"(0, 1, 4)", "(9, 2, -4)", "(-3, 0.5, -14)", "(2, -1.9, 3)", "(0, 8, 2)"};
+  for (int n : {12, 150, 1000}) {
+    for (const std::string& eye : eyes) {
+      SCOPED_TRACE(std::to_string(n) + " spheres, eye " + eye);
+      const Scene scene = field(n, eye);
+      EXPECT_EQ(differences(scene, OUTPUT_SHADED, FILTER_POINT, 96, 64), 0u);
+      EXPECT_EQ(differences(scene, OUTPUT_SHADED, FILTER_BOX, 96, 64), 0u);
+    }
+  }
+  Scene inside = field(200, "(0, 1, 4)");
+  const Sphere& s = inside.spheres[7];
+  inside.camera.eye = s.center;
+  inside.camera.lookat = s.center + glm::dvec3(0.3, -0.2, -1.0);
+  SCOPED_TRACE("inside a sphere");
+  EXPECT_EQ(differences(inside, OUTPUT_SHADED, FILTER_POINT, 96, 64), 0u);
+  EXPECT_EQ(differences(inside, OUTPUT_COORDS, FILTER_POINT, 96, 64), 0u);
+}
+
+// The comparison can fail: a tree whose boxes lose a sphere renders another image.
+TEST_F(SphereTreeTest, ABoxThatMissesASphereChangesTheImage) {
+  const Scene scene = field(150, "(0, 1, 4)");
+  GpuScene g = buildGpuScene(scene, 96, 64);
+  std::vector<float> right = renderPacked(g, OUTPUT_SHADED, FILTER_POINT);
+  for (gpu::BvhNode& n : g.treeNodes)
+    if (n.spheres != 0) n.hi = n.lo;  // every leaf box shrunk to a corner
+  std::vector<float> wrong = renderPacked(g, OUTPUT_SHADED, FILTER_POINT);
+  EXPECT_NE(right, wrong);
+}
+
+// Over MAX_UNIFORM_SPHERES the spheres and nodes are read from storage buffers: each reliable
+// pixel hits what the float64 reference hits, at its texture coordinate. Pixels within float
+// rounding of a silhouette (near-ties) are counted, not checked.
+TEST_F(SphereTreeTest, StorageBuffersHitWhatTheReferenceHits) {
+  const int w = 160, h = 120;
+  const Scene scene = field(3000, "(0, 1, 4)");
+  const GpuScene g = buildGpuScene(scene, w, h);
+  ASSERT_EQ(g.shape.sphereTree, uint32_t(SPHERE_TREE_STORAGE));
+  std::vector<float> gpu = renderPacked(g, OUTPUT_COORDS, FILTER_POINT);
+  int checked[3] = {0, 0, 0}, nearTies = 0, wrongKind = 0;
+  double worst = 0.0;
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      const glm::dvec3 d = referenceRayDirection(scene.camera, w, h, x, y);
+      const ReferenceHit hit = referenceClosestHit(scene, scene.camera.eye, d, true);
+      const float* p = &gpu[size_t(y * w + x) * 4];
+      if (hit.edgeMargin < 2e-3 || (hit.kind == HIT_PLANE && hit.t > 60.0) ||
+          (hit.kind == HIT_SPHERE && std::abs(hit.n.y) > 0.999)) {
+        ++nearTies;
+        continue;
+      }
+      if (int(p[3]) != hit.kind) {
+        ++wrongKind;
+        continue;
+      }
+      ++checked[hit.kind];
+      if (hit.kind != HIT_SPHERE) continue;
+      const Material& m = scene.materials[size_t(scene.spheres[hit.index].material)];
+      const bool solid = isSolidTexture(m.texture.kind);
+      for (int c = 0; c < (solid ? 3 : 2); ++c) {
+        double ref = solid ? hit.tc.solid[c] : hit.tc.uv[c];
+        double diff = std::abs(p[c] - ref);
+        if (!solid) diff = std::min(diff, std::abs(1.0 - diff));  // u wraps at the seam
+        worst = std::max(worst, diff);
+      }
+    }
+  }
+  RecordProperty("near_ties", nearTies);
+  EXPECT_EQ(wrongKind, 0);
+  EXPECT_GT(checked[HIT_SPHERE], w * h / 20);
+  EXPECT_GT(checked[HIT_PLANE], w * h / 5);
+  EXPECT_LT(nearTies, w * h / 10);
+  EXPECT_LT(worst, 1e-3) << "largest texture-coordinate difference";
+}
+
+}  // namespace
