@@ -72,7 +72,7 @@ using uvec4 = glm::uvec4;
 #define TREE_LEAF_SHIFT 24u          // BvhNode.spheres: count << TREE_LEAF_SHIFT | first
 // Scenes with at least this many spheres walk the tree (measured: docs/performance.md, "The
 // sphere tree"); fewer keep the loop, specialised to their count where it is small.
-#define SPHERE_TREE_MIN_SPHERES 12
+#define SPHERE_TREE_MIN_SPHERES 28
 
 // Lavapipe ends a kernel's loops after 65 535 passes per SIMD group, counted over every loop of
 // the kernel, and silently drops the rest of its work. Kernels built with SPEC_LOOP_BUDGET > 0

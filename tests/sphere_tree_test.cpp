@@ -78,7 +78,7 @@ TEST_F(SphereTreeTest, RendersWhatTheLoopOverEverySphereRenders) {
   // The bench's view, orbiting views (some looking back over the field, the light behind), a
   // view from low down along the floor and one from inside a sphere.
   const std::string eyes[] = {"(0, 1, 4)", "(9, 2, -4)", "(-3, 0.5, -14)", "(2, -1.9, 3)", "(0, 8, 2)"};
-  for (int n : {12, 150, 1000}) {
+  for (int n : {int(SPHERE_TREE_MIN_SPHERES), 150, 1000}) {
     for (const std::string& eye : eyes) {
       SCOPED_TRACE(std::to_string(n) + " spheres, eye " + eye);
       const Scene scene = field(n, eye);
@@ -107,8 +107,9 @@ TEST_F(SphereTreeTest, ABoxThatMissesASphereChangesTheImage) {
 }
 
 // Over MAX_UNIFORM_SPHERES the spheres and nodes are read from storage buffers: each reliable
-// pixel hits what the float64 reference hits, at its texture coordinate. Pixels within float
-// rounding of a silhouette (near-ties) are counted, not checked.
+// pixel hits what the float64 reference hits, at its texture coordinate. Pixels near a
+// silhouette (within 2e-3 of the ray's distance: near-ties for a float ray), on the far floor or
+// at a pole are counted, not checked (1196 of 19200 here).
 TEST_F(SphereTreeTest, StorageBuffersHitWhatTheReferenceHits) {
   const int w = 160, h = 120;
   const Scene scene = field(3000, "(0, 1, 4)");
