@@ -44,6 +44,7 @@ SceneShape sceneShape(const Scene& scene) {
   shape.planeCount = count(scene.planes.size());
   shape.lightCount = count(scene.lights.size());
   shape.sphereTree = sphereTreeFor(scene.spheres.size());
+  shape.tileLists = shape.sphereTree != SPHERE_TREE_NONE;
   // A plane's tex_scale and tex_offset, and its turn of (u, v) and the image, are folded into
   // what it packs anyway; its turned solid coordinate and a sphere's placement are not.
   const TexturePlacement none;

@@ -23,11 +23,12 @@ struct SceneShape {
   uint32_t placed = 1;  // SPEC_TEXTURE_PLACEMENT (a VkBool32): an object's placement needs the kernel's
   uint32_t imageCount = MAX_IMAGES;  // image files the objects use (SPEC_IMAGE_COUNT)
   uint32_t sphereTree = SPHERE_TREE_NONE;  // SPEC_SPHERE_TREE: how the spheres are walked
+  uint32_t tileLists = 0;  // SPEC_TILE_LISTS (a VkBool32): primary rays test their tile's spheres
   uint32_t kinds() const { return sphereKinds | planeKinds; }
   bool operator==(const SceneShape& o) const {
     return sphereKinds == o.sphereKinds && planeKinds == o.planeKinds && sphereCount == o.sphereCount &&
            planeCount == o.planeCount && lightCount == o.lightCount && placed == o.placed &&
-           imageCount == o.imageCount && sphereTree == o.sphereTree;
+           imageCount == o.imageCount && sphereTree == o.sphereTree && tileLists == o.tileLists;
   }
 };
 

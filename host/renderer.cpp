@@ -22,10 +22,12 @@ void writeDescriptors(Renderer& r) {
   const VkDescriptorBufferInfo buffers[] = {
       bufferInfo(r.frame),        bufferInfo(r.spheres), bufferInfo(r.planes),      bufferInfo(r.materials),
       bufferInfo(r.lights),       bufferInfo(r.noise),   bufferInfo(r.accumulation), bufferInfo(r.pixels),
-      bufferInfo(r.tree),         bufferInfo(r.treeStorage), bufferInfo(r.sphereStorage), bufferInfo(r.status)};
+      bufferInfo(r.tree),         bufferInfo(r.treeStorage), bufferInfo(r.sphereStorage), bufferInfo(r.status),
+      bufferInfo(r.tileRanges),   bufferInfo(r.tileSpheres)};
   const uint32_t bufferBindings[] = {BINDING_FRAME,  BINDING_SPHERES, BINDING_PLANES,       BINDING_MATERIALS,
                                      BINDING_LIGHTS, BINDING_NOISE,   BINDING_ACCUMULATION, BINDING_OUTPUT,
-                                     BINDING_TREE,   BINDING_TREE_STORAGE, BINDING_SPHERE_STORAGE, BINDING_STATUS};
+                                     BINDING_TREE,   BINDING_TREE_STORAGE, BINDING_SPHERE_STORAGE, BINDING_STATUS,
+                                     BINDING_TILE_RANGES, BINDING_TILE_SPHERES};
 
   std::vector<VkWriteDescriptorSet> writes;
   auto write = [&](uint32_t binding, VkDescriptorType type) {
@@ -45,7 +47,8 @@ void writeDescriptors(Renderer& r) {
   for (size_t i = 0; i < std::size(buffers); ++i) {
     const uint32_t b = bufferBindings[i];
     bool uniform = b != BINDING_ACCUMULATION && b != BINDING_OUTPUT && b != BINDING_TREE_STORAGE &&
-                   b != BINDING_SPHERE_STORAGE && b != BINDING_STATUS;
+                   b != BINDING_SPHERE_STORAGE && b != BINDING_STATUS && b != BINDING_TILE_RANGES &&
+                   b != BINDING_TILE_SPHERES;
     write(bufferBindings[i], uniform ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER
                                      : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER)->pBufferInfo = &buffers[i];
   }
@@ -80,6 +83,12 @@ void replaceSphereBuffers(Renderer& r, const GpuScene& s) {
   replaceUniformBuffer(r, r.tree, s.treeNodes.data(), storage ? 0 : s.treeNodes.size(), MAX_UNIFORM_TREE_NODES);
   replaceStorageBuffer(r, r.sphereStorage, s.spheres.data(), storage ? s.spheres.size() : 0);
   replaceStorageBuffer(r, r.treeStorage, s.treeNodes.data(), storage ? s.treeNodes.size() : 0);
+}
+
+// The per-tile lists (their sizes change with the camera).
+void replaceTileBuffers(Renderer& r, const GpuScene& s) {
+  replaceStorageBuffer(r, r.tileRanges, s.tiles.ranges.data(), s.tiles.ranges.size());
+  replaceStorageBuffer(r, r.tileSpheres, s.tiles.spheres.data(), s.tiles.spheres.size());
 }
 
 // Progressive sums, one vec4 per pixel; a placeholder when not accumulating (the binding exists).
@@ -184,7 +193,7 @@ void createRenderer(Renderer& r, const DeviceOptions& options) {
 
   const VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1},
                                         {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 7},
-                                        {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 5},
+                                        {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 7},
                                         {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, MAX_IMAGES}};
   VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
   poolInfo.maxSets = 1;
@@ -231,7 +240,8 @@ void destroyRenderer(Renderer& r) {
     vkDeviceWaitIdle(d);
     for (CachedPipeline& p : r.pipelines) vkDestroyPipeline(d, p.pipeline, nullptr);
     for (Buffer* b : {&r.frame, &r.spheres, &r.planes, &r.materials, &r.lights, &r.noise, &r.pixels,
-                      &r.accumulation, &r.tree, &r.treeStorage, &r.sphereStorage, &r.status})
+                      &r.accumulation, &r.tree, &r.treeStorage, &r.sphereStorage, &r.status, &r.tileRanges,
+                      &r.tileSpheres})
       destroyBuffer(r.device, *b);
     destroyImage(r.device, r.display);
     destroyImages(r);
@@ -255,6 +265,7 @@ void uploadScene(Renderer& r, const GpuScene& s) {
   // Whole blocks (buildGpuScene keeps to the MAX_* counts); the noise table even when unused.
   replaceUniformBuffer(r, r.frame, &s.frame, 1);
   replaceSphereBuffers(r, s);
+  replaceTileBuffers(r, s);
   replaceUniformBuffer(r, r.planes, s.planes.data(), s.planes.size(), MAX_PLANES);
   replaceUniformBuffer(r, r.materials, s.materials.data(), s.materials.size(), MAX_MATERIALS);
   replaceUniformBuffer(r, r.lights, s.lights.data(), s.lights.size(), MAX_LIGHTS);
@@ -282,6 +293,10 @@ void updateSceneBuffers(Renderer& r, const GpuScene& s) {
   const bool storage = s.shape.sphereTree == SPHERE_TREE_STORAGE;
   writeBuffer(storage ? r.sphereStorage : r.spheres, s.spheres.data(), sizeof(gpu::Sphere) * s.spheres.size());
   writeBuffer(storage ? r.treeStorage : r.tree, s.treeNodes.data(), sizeof(gpu::BvhNode) * s.treeNodes.size());
+  if (s.shape.tileLists) {
+    replaceTileBuffers(r, s);
+    writeDescriptors(r);
+  }
   writeBuffer(r.planes, s.planes.data(), sizeof(gpu::Plane) * s.planes.size());
   writeBuffer(r.lights, s.lights.data(), sizeof(gpu::Light) * s.lights.size());
 }

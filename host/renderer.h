@@ -37,6 +37,7 @@ struct Renderer {
   // The sphere tree's nodes (uniform, a placeholder block without a tree) and, over the uniform
   // blocks' sizes, its nodes and the spheres in storage buffers (else 16-byte placeholders).
   Buffer tree, treeStorage, sphereStorage;
+  Buffer tileRanges, tileSpheres;  // primary rays' per-tile sphere lists (placeholders without)
   Buffer status;  // BINDING_STATUS: what the kernel reports (the loop budget), cleared per frame
   // The float image the host reads: width * height * 4 floats of linear radiance, written by
   // the kernel (BINDING_OUTPUT) or, progressive, by readbackFrame.

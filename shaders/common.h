@@ -46,6 +46,10 @@ using uvec4 = glm::uvec4;
 #define BINDING_TREE_STORAGE 11    // storage BvhNode[] (SPHERE_TREE_STORAGE)
 #define BINDING_SPHERE_STORAGE 12  // storage Sphere[] (SPHERE_TREE_STORAGE)
 #define BINDING_STATUS 13          // storage uint[STATUS_WORDS]: what the kernel reports to the host
+// Per-tile sphere lists (SPEC_TILE_LISTS, host/tile_lists.h): per tile its first entry and count,
+// and the entries (indices of spheres). 16-byte placeholders without them.
+#define BINDING_TILE_RANGES 14   // storage uint[2 * tiles]
+#define BINDING_TILE_SPHERES 15  // storage uint[]
 
 // What one render can hold: the uniform blocks' sizes, each within the 64 KiB of
 // maxUniformBufferRange on lavapipe and NVIDIA (buildGpuScene reports a scene over them).
@@ -70,6 +74,14 @@ using uvec4 = glm::uvec4;
 #define MAX_UNIFORM_TREE_NODES 2048  // 2048 * 32 bytes = 64 KiB: a tree over 1024 spheres
 #define TREE_LEAF_SIZE 4u            // spheres in a leaf, at most
 #define TREE_LEAF_SHIFT 24u          // BvhNode.spheres: count << TREE_LEAF_SHIFT | first
+// Primary rays of a scene with a tree test the spheres listed for their tile of
+// TILE_SIZE x TILE_SIZE pixels (one workgroup); a tile with more than TILE_LIST_MAX walks the
+// tree (its count is TILE_USE_TREE). The host builds lists of at most TILE_FILL_LIMIT entries a
+// tile on average; over that every tile walks the tree.
+#define TILE_SIZE 8u
+#define TILE_LIST_MAX 32u
+#define TILE_USE_TREE 0xFFFFFFFFu
+#define TILE_FILL_LIMIT 64u
 // Scenes with at least this many spheres walk the tree (measured: docs/performance.md, "The
 // sphere tree"); fewer keep the loop, specialised to their count where it is small.
 #define SPHERE_TREE_MIN_SPHERES 28
@@ -114,6 +126,7 @@ using uvec4 = glm::uvec4;
 #define SPEC_IMAGE_COUNT 11  // image files the scene's objects use (switch cases past it compile out)
 #define SPEC_SPHERE_TREE 12  // SPHERE_TREE_*
 #define SPEC_LOOP_BUDGET 13  // loop passes a SIMD group may make (0: not counted)
+#define SPEC_TILE_LISTS 14   // 1: primary rays test their tile's spheres (BINDING_TILE_*)
 
 // Scenes with at most this many spheres, planes or lights get kernels with the count
 // built in (the loops over them unrolled); larger ones loop to Frame's count. On lavapipe a
@@ -200,7 +213,7 @@ struct Frame {
   uint rowOffset;
   uint bandRows;
   uint treeNodeCount;  // nodes of the sphere tree (SPEC_SPHERE_TREE)
-  uint pad1;
+  uint tileColumns;    // tiles per row of the image (SPEC_TILE_LISTS)
 };
 
 // Texture placement (docs/textures.md, "Texture placement") is packed by the host in double:
@@ -286,6 +299,7 @@ static_assert(sizeof(Light) == 32, "Light layout");
 static_assert(sizeof(BvhNode) == 32, "BvhNode layout");
 static_assert(MAX_UNIFORM_TREE_NODES >= 2 * MAX_UNIFORM_SPHERES - 1, "a tree over the uniform spheres fits its block");
 static_assert(MAX_SPHERES < (1u << TREE_LEAF_SHIFT), "BvhNode.spheres holds a first sphere");
+static_assert(TILE_SIZE == WORKGROUP_X && TILE_SIZE == WORKGROUP_Y, "a tile is a workgroup");
 static_assert(sizeof(NoiseTable) == NOISE_PERM_SIZE * 4, "NoiseTable layout");
 static_assert(sizeof(Sphere) / 4 <= BAKED_SPHERE_STRIDE && sizeof(Plane) / 4 <= BAKED_PLANE_STRIDE &&
                   sizeof(Light) / 4 <= BAKED_LIGHT_STRIDE && sizeof(Material) / 4 <= BAKED_MATERIAL_STRIDE &&

@@ -37,7 +37,7 @@ float intersectPlane(vec3 o, vec3 dir, vec4 normalDistance, float tMin, float tM
 
 #include "sphere_tree.glsl"
 
-// The closest hit. With a sphere tree the planes come first: their nearest hit bounds the
+// The closest hit of a primary ray. With a sphere tree the planes come first: their nearest hit bounds the
 // boxes the walk enters (a floor hides the spheres beyond it). Loops bounded by Frame's counts
 // count their passes (loop_budget.glsl); those over constants are unrolled.
 Hit closestHit(vec3 o, vec3 d) {
@@ -54,7 +54,10 @@ Hit closestHit(vec3 o, vec3 d) {
     if (t > 0.0) hit = Hit(t, HIT_PLANE, i);
   }
   if (PLANE_COUNT == COUNT_FROM_FRAME) countLoop(planeCount());
-  if (SPHERE_TREE != SPHERE_TREE_NONE) closestSphereInTree(o, d, hit);
+  if (SPHERE_TREE != SPHERE_TREE_NONE) {
+    if (TILE_LISTS) closestSphereInTile(o, d, hit);
+    else closestSphereInTree(o, d, hit);
+  }
   return hit;
 }
 

@@ -72,3 +72,22 @@ bool occludedInTree(vec3 o, vec3 d, float tMax) {
   countLoop(passes);
   return blocked;
 }
+
+// The closest sphere hit of a primary ray nearer than hit.t, into hit: the spheres listed for
+// its tile (host/tile_lists.h; the lanes of a workgroup share one tile, so the list's loads and
+// its loop are the same for all of them), or the tree's where the tile's list is long.
+void closestSphereInTile(vec3 o, vec3 d, inout Hit hit) {
+  uint first = tileRanges[2u * primaryTile], count = tileRanges[2u * primaryTile + 1u];
+  if (count == TILE_USE_TREE) {
+    closestSphereInTree(o, d, hit);
+    return;
+  }
+  uint passes = 0u;
+  for (uint k = 0u; k < count; ++k) {
+    ++passes;
+    uint i = tileSpheres[first + k];
+    float t = intersectSphere(o, d, sphereAt(i).centerRadius, 0.0, hit.t);
+    if (t > 0.0) hit = Hit(t, HIT_SPHERE, i);
+  }
+  countLoop(passes);
+}

@@ -31,6 +31,7 @@ layout(constant_id = SPEC_TEXTURE_PLACEMENT) const bool TEXTURE_PLACEMENT = true
 layout(constant_id = SPEC_BAKED_MATERIAL_COUNT) const uint BAKED_MATERIAL_COUNT = 1u;
 layout(constant_id = SPEC_SPHERE_TREE) const uint SPHERE_TREE = SPHERE_TREE_NONE;
 layout(constant_id = SPEC_LOOP_BUDGET) const uint LOOP_BUDGET = 0u;
+layout(constant_id = SPEC_TILE_LISTS) const bool TILE_LISTS = false;
 
 layout(std430, binding = BINDING_OUTPUT) writeonly buffer OutputBlock { vec4 outputPixels[]; };
 layout(std140, binding = BINDING_FRAME) uniform FrameBlock { Frame frameBlock; };
@@ -46,6 +47,8 @@ layout(std140, binding = BINDING_TREE) uniform TreeBlock { BvhNode treeBlock[MAX
 layout(std430, binding = BINDING_TREE_STORAGE) readonly buffer TreeStorage { BvhNode treeStorage[]; };
 layout(std430, binding = BINDING_SPHERE_STORAGE) readonly buffer SphereStorage { Sphere sphereStorage[]; };
 layout(std430, binding = BINDING_STATUS) buffer StatusBlock { uint status[STATUS_WORDS]; };
+layout(std430, binding = BINDING_TILE_RANGES) readonly buffer TileRanges { uint tileRanges[]; };
+layout(std430, binding = BINDING_TILE_SPHERES) readonly buffer TileSpheres { uint tileSpheres[]; };
 
 #include "baked.glsl"
 
@@ -56,6 +59,7 @@ layout(std430, binding = BINDING_STATUS) buffer StatusBlock { uint status[STATUS
 // instructions per pixel by bench/instructions.sh: 374, 340 with the frame copied, 325 also
 // without main's early return, 286 also with the objects and lights copied).
 Frame frame;
+uint primaryTile;  // the pixel's tile (TILE_LISTS), set in main
 const uint SPHERE_CACHE = SPHERE_COUNT == COUNT_FROM_FRAME || SPHERE_COUNT == 0u ? 1u : SPHERE_COUNT;
 const uint PLANE_CACHE = PLANE_COUNT == COUNT_FROM_FRAME || PLANE_COUNT == 0u ? 1u : PLANE_COUNT;
 const uint LIGHT_CACHE = LIGHT_COUNT == COUNT_FROM_FRAME || LIGHT_COUNT == 0u ? 1u : LIGHT_COUNT;
@@ -227,6 +231,7 @@ void main() {
   bool inside = id.x < frame.width && id.y < frame.bandRows;
   uvec2 pixel = min(id + uvec2(0u, frame.rowOffset), uvec2(frame.width, frame.height) - 1u);
   uint outputIndex = (pixel.y - frame.rowOffset) * frame.width + pixel.x;
+  primaryTile = (pixel.y / TILE_SIZE) * frame.tileColumns + pixel.x / TILE_SIZE;
   vec3 origin = frame.eye.xyz;
 #ifdef RAYTEX_DEBUG_OUTPUT
   vec4 result = debugOutput(origin, vec2(pixel) + 0.5);

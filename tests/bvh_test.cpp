@@ -1,7 +1,9 @@
 // The sphere BVH: its structure, and closest hits through it against testing every sphere
 // (no device).
 #include "bvh.h"
+#include "gpu_scene.h"
 #include "gpu_tree.h"
+#include "tile_lists.h"
 #include "reference.h"
 
 #include <glm/geometric.hpp>
@@ -179,4 +181,44 @@ TEST(GpuTree, FewSpheresKeepTheLoopAndManyGoToStorage) {
   EXPECT_EQ(sphereTreeFor(SPHERE_TREE_MIN_SPHERES), uint32_t(SPHERE_TREE_UNIFORM));
   EXPECT_EQ(sphereTreeFor(MAX_UNIFORM_SPHERES), uint32_t(SPHERE_TREE_UNIFORM));
   EXPECT_EQ(sphereTreeFor(MAX_UNIFORM_SPHERES + 1), uint32_t(SPHERE_TREE_STORAGE));
+}
+
+// The per-tile lists (tile_lists.h) are conservative: every sphere a pixel's ray hits is listed
+// for its tile, and a sphere that reaches the camera plane is in every tile.
+TEST(TileLists, EveryHitSphereIsListedForItsPixelsTile) {
+  Scene scene = randomSpheres(400, 30.0, 9);
+  scene.camera.eye = {0.0, 0.0, 40.0};
+  scene.camera.lookat = {0.0, 0.0, 0.0};
+  scene.spheres[5].center = {0.3, 0.2, 40.2};  // around the eye: every tile
+  const uint32_t w = 200, h = 120;
+  gpu::Frame f = cameraFrame(scene.camera, w, h);
+  std::vector<gpu::Sphere> packed;
+  for (const Sphere& s : scene.spheres)
+    packed.push_back({glm::vec4(glm::vec3(s.center - scene.camera.eye), float(s.radius))});
+  const TileLists lists = buildTileLists(f, packed);
+  ASSERT_EQ(lists.columns, 25u);
+  ASSERT_EQ(lists.rows, 15u);
+  auto listed = [&](uint32_t tile, uint32_t sphere) {
+    const uint32_t first = lists.ranges[2 * tile], count = lists.ranges[2 * tile + 1];
+    if (count == TILE_USE_TREE) return true;
+    return std::find(lists.spheres.begin() + first, lists.spheres.begin() + first + count, sphere) !=
+           lists.spheres.begin() + first + count;
+  };
+  int hits = 0, walks = 0;
+  for (uint32_t t = 0; t < lists.columns * lists.rows; ++t) {
+    walks += lists.ranges[2 * t + 1] == TILE_USE_TREE;
+    EXPECT_TRUE(listed(t, 5)) << "tile " << t;
+  }
+  scene.spheres.erase(scene.spheres.begin() + 5);  // the rays from inside it hit it first
+  for (uint32_t y = 0; y < h; ++y)
+    for (uint32_t x = 0; x < w; ++x) {
+      const ReferenceHit hit = referenceClosestHit(scene, scene.camera.eye,
+                                                   referenceRayDirection(scene.camera, int(w), int(h), int(x), int(y)), false);
+      if (hit.kind != 2) continue;
+      ++hits;
+      const uint32_t sphere = hit.index >= 5 ? hit.index + 1 : hit.index;  // its index before the erase
+      EXPECT_TRUE(listed((y / TILE_SIZE) * lists.columns + x / TILE_SIZE, sphere)) << x << ", " << y;
+    }
+  EXPECT_GT(hits, int(w * h / 20));
+  EXPECT_LT(walks, int(lists.columns * lists.rows / 4));  // most tiles have lists
 }

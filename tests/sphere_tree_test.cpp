@@ -106,6 +106,20 @@ TEST_F(SphereTreeTest, ABoxThatMissesASphereChangesTheImage) {
   EXPECT_NE(right, wrong);
 }
 
+// And so can the tile lists': with every tile's list empty, primary rays miss the spheres.
+TEST_F(SphereTreeTest, EmptyTileListsChangeTheImage) {
+  const Scene scene = field(150, "(0, 1, 4)");
+  GpuScene g = buildGpuScene(scene, 96, 64);
+  ASSERT_TRUE(g.shape.tileLists);
+  std::vector<float> right = renderPacked(g, OUTPUT_COORDS, FILTER_POINT);
+  for (size_t t = 1; t < g.tiles.ranges.size(); t += 2) g.tiles.ranges[t] = 0;
+  std::vector<float> wrong = renderPacked(g, OUTPUT_COORDS, FILTER_POINT);
+  size_t spheres = 0;
+  for (size_t i = 3; i < wrong.size(); i += 4) spheres += wrong[i] == float(HIT_SPHERE);
+  EXPECT_NE(right, wrong);
+  EXPECT_EQ(spheres, 0u);
+}
+
 // Over MAX_UNIFORM_SPHERES the spheres and nodes are read from storage buffers: each reliable
 // pixel hits what the float64 reference hits, at its texture coordinate. Pixels near a
 // silhouette (within 2e-3 of the ray's distance: near-ties for a float ray), on the far floor or

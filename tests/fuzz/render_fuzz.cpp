@@ -2,10 +2,13 @@
 // rendered when it parses at 8 x 8 pixels and 1 sample with both texture filters (point and box)
 // on one Vulkan device created once. Every pixel of the float output must be finite: a
 // non-finite value (a NaN or infinity written as black) aborts. The pipelines are the
-// unspecialised kernel (every texture kind, counts from Frame, values from the uniform buffers),
-// created once, so an input costs a dispatch and no compilation. Scenes that buildGpuScene
-// refuses (over the kernel's limits, an image that does not load) are skipped. Built by
-// RAYTEX_FUZZ_RENDER=ON with clang; tests/fuzz/run.sh render builds and runs it.
+// unspecialised kernels (every texture kind, counts from Frame, values from the uniform buffers),
+// each created once, so an input costs dispatches and no compilation: the loop over every sphere
+// (where the spheres fit the uniform block) and the sphere tree's walk, which every scene with a
+// sphere also renders through (a tree over a few spheres is as valid as over many). Scenes that
+// buildGpuScene refuses (over the kernel's limits, an image that does not load) and renders over
+// lavapipe's loop budget are skipped. Built by RAYTEX_FUZZ_RENDER=ON with clang;
+// tests/fuzz/run.sh render builds and runs it.
 #include "gpu_scene.h"
 #include "parser.h"
 #include "renderer.h"
@@ -30,9 +33,20 @@ Renderer& sharedRenderer() {
   return *renderer;
 }
 
-// Renders the uploaded scene with `filter`; aborts on the first non-finite channel.
-void renderFinite(Renderer& renderer, uint32_t filter, const std::string& text) {
+// The scene packed to walk a sphere tree, whatever its number of spheres.
+GpuScene withTree(GpuScene g, const Scene& scene) {
+  if (g.shape.sphereTree != SPHERE_TREE_NONE || scene.spheres.empty()) return g;
+  g.shape.sphereTree = SPHERE_TREE_UNIFORM;
+  g.sphereTree = buildSphereBvh(scene.spheres);
+  packCamera(g, scene, kSize, kSize);
+  return g;
+}
+
+// Renders the uploaded scene with `filter` and the scene's way of walking its spheres; aborts on
+// the first non-finite channel.
+void renderFinite(Renderer& renderer, uint32_t sphereTree, uint32_t filter, const std::string& text) {
   KernelKey key;  // the unspecialised kernel: every kind, counts read at run time
+  key.shape.sphereTree = sphereTree;
   key.textureFilter = filter;
   preparePipeline(renderer, key);
   renderFrame(renderer);
@@ -53,15 +67,23 @@ void renderFinite(Renderer& renderer, uint32_t filter, const std::string& text) 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   static const std::string path = std::string(RAYTEX_SOURCE_DIR) + "/scenes/fuzz.cfg";
   const std::string text(reinterpret_cast<const char*>(data), size);
+  Scene scene;
   GpuScene gpuScene;
   try {
-    gpuScene = buildGpuScene(parseSceneText(text, path), kSize, kSize);
+    scene = parseSceneText(text, path);
+    gpuScene = buildGpuScene(scene, kSize, kSize);
   } catch (const SceneError&) {
     return 0;  // not a scene raytex renders: parser_fuzz.cpp checks the messages
   }
   Renderer& renderer = sharedRenderer();
-  uploadScene(renderer, gpuScene);
-  renderFinite(renderer, FILTER_POINT, text);
-  renderFinite(renderer, FILTER_BOX, text);
+  try {
+    for (const GpuScene& g : {gpuScene, withTree(gpuScene, scene)}) {
+      uploadScene(renderer, g);
+      renderFinite(renderer, g.shape.sphereTree, FILTER_POINT, text);
+      renderFinite(renderer, g.shape.sphereTree, FILTER_BOX, text);
+    }
+  } catch (const LoopBudgetError&) {
+    return 0;  // reported by raytex (exit 1), the image not used
+  }
   return 0;
 }
