@@ -24,8 +24,9 @@ struct SphereBvh {
 };
 
 // At most kBvhLeafSize spheres in a leaf (those whose centres no split tells apart are split by
-// their order).
-constexpr uint32_t kBvhLeafSize = 4;
+// their order). One: on lavapipe a leaf's spheres cost more than another node's pass
+// (docs/performance.md, "One sphere a leaf").
+constexpr uint32_t kBvhLeafSize = 1;
 
 SphereBvh buildSphereBvh(const std::vector<Sphere>& spheres);
 

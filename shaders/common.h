@@ -72,7 +72,7 @@ using uvec4 = glm::uvec4;
 #define SPHERE_TREE_UNIFORM 1  // nodes in BINDING_TREE, spheres in BINDING_SPHERES
 #define SPHERE_TREE_STORAGE 2  // nodes in BINDING_TREE_STORAGE, spheres in BINDING_SPHERE_STORAGE
 #define MAX_UNIFORM_TREE_NODES 2048  // 2048 * 32 bytes = 64 KiB: a tree over 1024 spheres
-#define TREE_LEAF_SIZE 4u            // spheres in a leaf, at most
+#define TREE_LEAF_SIZE 1u            // spheres in a leaf, at most
 #define TREE_LEAF_SHIFT 24u          // BvhNode.spheres: count << TREE_LEAF_SHIFT | first
 // Primary rays of a scene with a tree test the spheres listed for their tile of
 // TILE_SIZE x TILE_SIZE pixels (one workgroup); a tile with more than TILE_LIST_MAX walks the
