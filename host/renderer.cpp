@@ -91,6 +91,18 @@ void replaceTileBuffers(Renderer& r, const GpuScene& s) {
   replaceStorageBuffer(r, r.tileSpheres, s.tiles.spheres.data(), s.tiles.spheres.size());
 }
 
+// Writes `count` items into a storage buffer, replacing it only when they do not fit; returns
+// whether it was replaced (its descriptor then needs writing).
+template <typename T>
+bool refillStorageBuffer(Renderer& r, Buffer& buffer, const T* data, size_t count) {
+  if (sizeof(T) * count <= buffer.size) {
+    writeBuffer(buffer, data, sizeof(T) * count);
+    return false;
+  }
+  replaceStorageBuffer(r, buffer, data, count);
+  return true;
+}
+
 // Progressive sums, one vec4 per pixel; a placeholder when not accumulating (the binding exists).
 VkDeviceSize accumulationBytes(const Renderer& r, uint32_t width, uint32_t height) {
   return r.accumulate ? VkDeviceSize(width) * height * 16 : 16;
@@ -293,10 +305,10 @@ void updateSceneBuffers(Renderer& r, const GpuScene& s) {
   const bool storage = s.shape.sphereTree == SPHERE_TREE_STORAGE;
   writeBuffer(storage ? r.sphereStorage : r.spheres, s.spheres.data(), sizeof(gpu::Sphere) * s.spheres.size());
   writeBuffer(storage ? r.treeStorage : r.tree, s.treeNodes.data(), sizeof(gpu::BvhNode) * s.treeNodes.size());
-  if (s.shape.tileLists) {
-    replaceTileBuffers(r, s);
-    writeDescriptors(r);
-  }
+  // The lists change length with the camera: the buffers grow when they must, not per move.
+  bool replaced = refillStorageBuffer(r, r.tileRanges, s.tiles.ranges.data(), s.tiles.ranges.size());
+  replaced |= refillStorageBuffer(r, r.tileSpheres, s.tiles.spheres.data(), s.tiles.spheres.size());
+  if (replaced) writeDescriptors(r);
   writeBuffer(r.planes, s.planes.data(), sizeof(gpu::Plane) * s.planes.size());
   writeBuffer(r.lights, s.lights.data(), sizeof(gpu::Light) * s.lights.size());
 }
