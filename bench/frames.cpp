@@ -4,13 +4,15 @@
 // load of a shared machine, so kernel variants can be compared exactly.
 // The kernel is built around the scene's values as in raytex render (bakeScene), unless the
 // sixth argument is "unbaked"; its textures are point-sampled unless the seventh is "box"; the
-// eighth, "progressive", renders as the viewer does: one sample per frame, accumulated.
+// eighth, "progressive", renders as the viewer does: one sample per frame, accumulated; the ninth,
+// "one", renders with the scene's one kernel, not tile kernels (host/tile_kernels.h).
 // Usage: raytex_bench_frames SCENE WIDTH HEIGHT FRAMES [SAMPLES_PER_SIDE [baked|unbaked [point|box
-//        [single|progressive]]]]
+//        [single|progressive [tiles|one]]]]]
 #include "gpu_scene.h"
 #include "parser.h"
 #include "renderer.h"
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -19,7 +21,7 @@ int main(int argc, char** argv) {
   if (argc < 5) {
     fprintf(stderr,
             "usage: %s SCENE WIDTH HEIGHT FRAMES [SAMPLES_PER_SIDE [baked|unbaked [point|box "
-            "[single|progressive]]]]\n",
+            "[single|progressive [tiles|one]]]]]\n",
             argv[0]);
     return 2;
   }
@@ -29,6 +31,7 @@ int main(int argc, char** argv) {
   bool baked = !(argc > 6 && std::string(argv[6]) == "unbaked");
   uint32_t filter = argc > 7 && std::string(argv[7]) == "box" ? FILTER_BOX : FILTER_POINT;
   bool progressive = argc > 8 && std::string(argv[8]) == "progressive";
+  bool tiles = !(argc > 9 && std::string(argv[9]) == "one");
   Renderer r;
   try {
     GpuScene scene = buildGpuScene(parseSceneFile(argv[1]), width, height);
@@ -40,7 +43,12 @@ int main(int argc, char** argv) {
     kernel.samplesPerSide = side;
     kernel.bakeValues = baked;
     kernel.progressive = progressive;
-    preparePipeline(r, kernelKey(scene, kernel));
+    const KernelKey key = kernelKey(scene, kernel);
+    preparePipeline(r, key);
+    if (tiles && r.device.lavapipe && bandCount(r) == 1) {  // tile kernels wherever they save, as raytex bench
+      const TilePlan plan = planTileKernels(scene, {key.shape.sphereKinds, key.shape.planeKinds});
+      if (tileKernelsPay(plan, INFINITY)) prepareTileKernels(r, key, plan);
+    }
     renderSample(r, 0);
     for (int i = 0; i < frames; ++i) renderSample(r, progressive ? uint32_t(i + 1) % (side * side) : 0);
   } catch (const std::exception& e) {

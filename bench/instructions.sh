@@ -7,7 +7,7 @@
 # Usage: bench/instructions.sh [BUILD_DIR] SCENE... (env: WIDTH, HEIGHT, SIDE = samples per side,
 # UNBAKED=1: the kernel that reads the scene from its uniform blocks, as the viewer's does;
 # FILTER=box: the box-filtered kernel, as --filter box; PROGRESSIVE=1: the viewer's kernel, one
-# sample per frame, accumulated)
+# sample per frame, accumulated; TILES=0: the scene's one kernel, not tile kernels)
 set -euo pipefail
 build=${1:-build}
 shift
@@ -20,13 +20,14 @@ width=${WIDTH:-320} height=${HEIGHT:-240} side=${SIDE:-1}
 baked=$([ "${UNBAKED:-0}" = 1 ] && echo unbaked || echo baked)
 filter=${FILTER:-point}
 mode=$([ "${PROGRESSIVE:-0}" = 1 ] && echo progressive || echo single)
+tiles=$([ "${TILES:-1}" = 0 ] && echo one || echo tiles)
 case "$filter" in point|box) ;; *) echo "instructions.sh: FILTER must be point or box" >&2; exit 1 ;; esac
 count() {  # SCENE FRAMES -> total instructions of the process
   valgrind --tool=callgrind --smc-check=all --callgrind-out-file=/dev/null \
-    "$frames" "$1" "$width" "$height" "$2" "$side" "$baked" "$filter" "$mode" 2>&1 | sed -n 's/.*Collected : \([0-9]*\).*/\1/p'
+    "$frames" "$1" "$width" "$height" "$2" "$side" "$baked" "$filter" "$mode" "$tiles" 2>&1 | sed -n 's/.*Collected : \([0-9]*\).*/\1/p'
 }
 for scene in "$@"; do
   base=$(count "$scene" 0)
   more=$(count "$scene" 2)
-  echo "$scene ${width}x$height, $((side * side)) spp, $baked, $filter, $mode: $(((more - base) / 2 / (width * height))) instructions/pixel"
+  echo "$scene ${width}x$height, $((side * side)) spp, $baked, $filter, $mode, $tiles: $(((more - base) / 2 / (width * height))) instructions/pixel"
 done

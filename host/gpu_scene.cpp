@@ -225,10 +225,9 @@ void packCamera(GpuScene& g, const Scene& scene, uint32_t width, uint32_t height
   for (const Plane& p : scene.planes)
     g.planes.push_back(packPlane(p, materialAt(scene, p.material, fallback).texture, eye, g.materialIndex.at(p.material)));
   for (const Light& l : scene.lights) g.lights.push_back({v4(glm::vec3(l.position - eye)), v4(l.color)});
-  if (g.shape.sphereTree != SPHERE_TREE_NONE) {
-    layoutSphereTree(g.sphereTree, g.spheres, g.treeNodes);
-    g.tiles = buildTileLists(f, g.spheres);
-  }
+  if (g.shape.sphereTree != SPHERE_TREE_NONE) layoutSphereTree(g.sphereTree, g.spheres, g.treeNodes);
+  // The lists also tell the tile kernels which kinds a tile can show (tile_kernels.h).
+  g.tiles = g.spheres.empty() ? TileLists{} : buildTileLists(f, g.spheres);
   f.treeNodeCount = uint32_t(g.treeNodes.size());
   f.tileColumns = g.tiles.columns;
   f.sphereCount = uint32_t(g.spheres.size());

@@ -33,7 +33,7 @@ struct GpuScene {
   // space) and its nodes as laid out for the camera (packCamera).
   SphereBvh sphereTree;
   std::vector<gpu::BvhNode> treeNodes;
-  TileLists tiles;  // primary rays' sphere lists for the camera and size, with a tree
+  TileLists tiles;  // per-tile sphere lists for the camera and size (none without spheres)
   gpu::NoiseTable noise{};
   SceneShape shape;  // the kinds in use and the counts: what the kernel is specialised to
   std::map<int, uint32_t> materialIndex;  // Scene material (-1: the default) -> index in materials

@@ -9,6 +9,7 @@
 #include "renderer.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 double lapMs(std::chrono::steady_clock::time_point& start) {
@@ -35,7 +36,7 @@ int savePng(const std::string& output, const ImageRGBA8& image, size_t nonFinite
   return 0;
 }
 
-int renderHeadless(const RenderOptions& options, uint32_t extraFrames, HeadlessRender* out) {
+int renderHeadless(const RenderOptions& options, uint32_t extraFrames, HeadlessRender* out, bool steady) {
   PhaseTimes& times = out->times;
   std::chrono::steady_clock::time_point t = std::chrono::steady_clock::now();
   // Parse and load images before touching Vulkan: bad input fails fast.
@@ -86,7 +87,15 @@ int renderHeadless(const RenderOptions& options, uint32_t extraFrames, HeadlessR
     kernel.samplesPerSide = job.samplesPerSide;
     kernel.progressive = perSample;
     kernel.bakeValues = true;
-    preparePipeline(renderer, kernelKey(gpuScene, kernel));
+    const KernelKey key = kernelKey(gpuScene, kernel);
+    preparePipeline(renderer, key);
+    if (renderer.device.lavapipe && bandCount(renderer) == 1) {
+      // Tile kernels where they pay within this render's samples (tile_kernels.h), or, steady,
+      // wherever they save (bench: the frame a long render or the viewer gets).
+      const TilePlan plan = planTileKernels(gpuScene, {key.shape.sphereKinds, key.shape.planeKinds});
+      const double samples = steady ? INFINITY : double(job.samplesPerPixel) * (1 + extraFrames);
+      if (tileKernelsPay(plan, samples)) prepareTileKernels(renderer, key, plan);
+    }
     times.pipeline = lapMs(t);
     auto renderBand = [&](uint32_t firstRow) {  // one band of the image; its GPU time
       selectBand(renderer, firstRow);

@@ -40,5 +40,6 @@ int savePng(const std::string& output, const ImageRGBA8& image, size_t nonFinite
 
 // Renders options.scene on Vulkan, then `extraFrames` more frames of the same image (timed),
 // and saves the PNG (savePng: options.output, if any). Returns the exit code (0; 1 runtime
-// failure; 2 bad input), with a one-line message on stderr when not 0.
-int renderHeadless(const RenderOptions& options, uint32_t extraFrames, HeadlessRender* out);
+// failure; 2 bad input), with a one-line message on stderr when not 0. `steady`: tile kernels
+// wherever they save time per frame, not only where they pay for their pipelines in this render.
+int renderHeadless(const RenderOptions& options, uint32_t extraFrames, HeadlessRender* out, bool steady = false);

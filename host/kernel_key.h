@@ -60,10 +60,11 @@ struct KernelKey {
   uint32_t progressive = 0;      // SPEC_PROGRESSIVE (a VkBool32)
   BakedScene baked;              // SPEC_BAKED and the words, when options.bakeValues
   uint32_t loopBudget = 0;       // SPEC_LOOP_BUDGET: set by the renderer for its device
+  uint32_t tileOrder = 0;        // SPEC_TILE_ORDER (a VkBool32): one of a frame's tile kernels
   bool operator==(const KernelKey& o) const {
     return shape == o.shape && outputMode == o.outputMode && textureFilter == o.textureFilter &&
            samplesPerSide == o.samplesPerSide && progressive == o.progressive && baked == o.baked &&
-           loopBudget == o.loopBudget;
+           loopBudget == o.loopBudget && tileOrder == o.tileOrder;
   }
 };
 

@@ -37,6 +37,7 @@ VkDescriptorSetLayout createTraceSetLayout(const Device& device) {
       binding(BINDING_STATUS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER),
       binding(BINDING_TILE_RANGES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER),
       binding(BINDING_TILE_SPHERES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER),
+      binding(BINDING_TILE_ORDER, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC),
   };
   VkDescriptorSetLayoutCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
   info.bindingCount = uint32_t(std::size(bindings));
@@ -102,6 +103,7 @@ VkPipeline createTracePipeline(const Device& device, VkPipelineLayout layout, co
       {SPEC_SPHERE_TREE, offsetof(KernelKey, shape.sphereTree), sizeof(uint32_t)},
       {SPEC_LOOP_BUDGET, offsetof(KernelKey, loopBudget), sizeof(uint32_t)},
       {SPEC_TILE_LISTS, offsetof(KernelKey, shape.tileLists), sizeof(VkBool32)},
+      {SPEC_TILE_ORDER, offsetof(KernelKey, tileOrder), sizeof(VkBool32)},
       {SPEC_OUTPUT_MODE, offsetof(KernelKey, outputMode), sizeof(uint32_t)},
       {SPEC_SAMPLES_PER_SIDE, offsetof(KernelKey, samplesPerSide), sizeof(uint32_t)},
       {SPEC_PROGRESSIVE, offsetof(KernelKey, progressive), sizeof(VkBool32)},

@@ -23,11 +23,11 @@ void writeDescriptors(Renderer& r) {
       bufferInfo(r.frame),        bufferInfo(r.spheres), bufferInfo(r.planes),      bufferInfo(r.materials),
       bufferInfo(r.lights),       bufferInfo(r.noise),   bufferInfo(r.accumulation), bufferInfo(r.pixels),
       bufferInfo(r.tree),         bufferInfo(r.treeStorage), bufferInfo(r.sphereStorage), bufferInfo(r.status),
-      bufferInfo(r.tileRanges),   bufferInfo(r.tileSpheres)};
+      bufferInfo(r.tileRanges),   bufferInfo(r.tileSpheres), {r.tileOrder.buffer, 0, 4 * TILE_ORDER_CHUNK}};
   const uint32_t bufferBindings[] = {BINDING_FRAME,  BINDING_SPHERES, BINDING_PLANES,       BINDING_MATERIALS,
                                      BINDING_LIGHTS, BINDING_NOISE,   BINDING_ACCUMULATION, BINDING_OUTPUT,
                                      BINDING_TREE,   BINDING_TREE_STORAGE, BINDING_SPHERE_STORAGE, BINDING_STATUS,
-                                     BINDING_TILE_RANGES, BINDING_TILE_SPHERES};
+                                     BINDING_TILE_RANGES, BINDING_TILE_SPHERES, BINDING_TILE_ORDER};
 
   std::vector<VkWriteDescriptorSet> writes;
   auto write = [&](uint32_t binding, VkDescriptorType type) {
@@ -49,8 +49,10 @@ void writeDescriptors(Renderer& r) {
     bool uniform = b != BINDING_ACCUMULATION && b != BINDING_OUTPUT && b != BINDING_TREE_STORAGE &&
                    b != BINDING_SPHERE_STORAGE && b != BINDING_STATUS && b != BINDING_TILE_RANGES &&
                    b != BINDING_TILE_SPHERES;
-    write(bufferBindings[i], uniform ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER
-                                     : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER)->pBufferInfo = &buffers[i];
+    const VkDescriptorType type = b == BINDING_TILE_ORDER ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC
+                                  : uniform               ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER
+                                                          : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    write(bufferBindings[i], type)->pBufferInfo = &buffers[i];
   }
   vkUpdateDescriptorSets(r.device.device, uint32_t(writes.size()), writes.data(), 0, nullptr);
 }
@@ -101,6 +103,35 @@ bool refillStorageBuffer(Renderer& r, Buffer& buffer, const T* data, size_t coun
   }
   replaceStorageBuffer(r, buffer, data, count);
   return true;
+}
+
+// Writes the tile kernels' words (`words` from offset 0), replacing the buffer when they do not
+// fit. Every dispatch's block of TILE_ORDER_CHUNK words lies within the buffer.
+void writeTileOrder(Renderer& r, const std::vector<uint32_t>& words) {
+  const VkDeviceSize bytes = 4 * (words.size() + TILE_ORDER_CHUNK);
+  if (r.tileOrder.size < bytes) {
+    destroyBuffer(r.device, r.tileOrder);
+    r.tileOrder = createBuffer(r.device, bytes, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+    if (r.descriptorSet) writeDescriptors(r);
+  }
+  writeBuffer(r.tileOrder, words.data(), 4 * words.size());
+  r.tileOrderWords = words;
+}
+
+// The plan's tiles laid out for the dispatches: word 0 TILE_ORDER_NONE, then each kernel's
+// tiles in blocks of at most TILE_ORDER_CHUNK, each from an offset the device can bind.
+std::vector<uint32_t> layOutTiles(const Renderer& r, const TilePlan& plan, std::vector<TileDispatch>& dispatches) {
+  const uint32_t align = uint32_t(std::max<VkDeviceSize>(r.device.properties.limits.minUniformBufferOffsetAlignment, 4) / 4);
+  std::vector<uint32_t> words{TILE_ORDER_NONE};
+  dispatches.clear();
+  for (const TileKernel& k : plan.kernels)
+    for (size_t first = 0; first < k.tiles.size(); first += TILE_ORDER_CHUNK) {
+      words.resize((words.size() + align - 1) / align * align, TILE_ORDER_NONE);
+      const size_t count = std::min<size_t>(TILE_ORDER_CHUNK, k.tiles.size() - first);
+      dispatches.push_back({{}, VK_NULL_HANDLE, uint32_t(4 * words.size()), uint32_t(count)});
+      words.insert(words.end(), k.tiles.begin() + ptrdiff_t(first), k.tiles.begin() + ptrdiff_t(first + count));
+    }
+  return words;
 }
 
 // Progressive sums, one vec4 per pixel; a placeholder when not accumulating (the binding exists).
@@ -197,6 +228,7 @@ void createRenderer(Renderer& r, const DeviceOptions& options) {
   r.status = createBuffer(r.device, sizeof(uint32_t) * STATUS_WORDS, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
   const uint32_t clear[STATUS_WORDS] = {};
   writeBuffer(r.status, clear, sizeof(clear));
+  writeTileOrder(r, {TILE_ORDER_NONE});
 
   VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
   layoutInfo.setLayoutCount = 1;
@@ -205,6 +237,7 @@ void createRenderer(Renderer& r, const DeviceOptions& options) {
 
   const VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1},
                                         {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 7},
+                                        {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, 1},
                                         {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 7},
                                         {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, MAX_IMAGES}};
   VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
@@ -253,7 +286,7 @@ void destroyRenderer(Renderer& r) {
     for (CachedPipeline& p : r.pipelines) vkDestroyPipeline(d, p.pipeline, nullptr);
     for (Buffer* b : {&r.frame, &r.spheres, &r.planes, &r.materials, &r.lights, &r.noise, &r.pixels,
                       &r.accumulation, &r.tree, &r.treeStorage, &r.sphereStorage, &r.status, &r.tileRanges,
-                      &r.tileSpheres})
+                      &r.tileSpheres, &r.tileOrder})
       destroyBuffer(r.device, *b);
     destroyImage(r.device, r.display);
     destroyImages(r);
@@ -340,20 +373,43 @@ void checkLoopBudget(Renderer& r) {
                         "samples per pixel, or another Vulkan device");
 }
 
+// `tileOffset`: the dynamic offset of BINDING_TILE_ORDER (a tile kernel's tiles).
 void bindAndDispatch(Renderer& r, VkCommandBuffer cmd, VkPipeline pipeline, uint32_t baseX, uint32_t groupsX,
-                     uint32_t groupsY) {
+                     uint32_t groupsY, uint32_t tileOffset = 0) {
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
-  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, r.pipelineLayout, 0, 1, &r.descriptorSet, 0,
-                          nullptr);
+  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, r.pipelineLayout, 0, 1, &r.descriptorSet, 1,
+                          &tileOffset);
   vkCmdDispatchBase(cmd, baseX, 0, 0, groupsX, groupsY, 1);
 }
 
 }  // namespace
 
 void preparePipeline(Renderer& r, const KernelKey& key) {
+  r.tileDispatches.clear();
   if (r.pipeline && r.pipelineKey == budgeted(r, key)) return;
   r.pipeline = cachedPipeline(r, key).pipeline;
   r.pipelineKey = budgeted(r, key);
+}
+
+void prepareTileKernels(Renderer& r, const KernelKey& key, const TilePlan& plan) {
+  if (plan.kernels.empty()) return preparePipeline(r, key);
+  std::vector<TileDispatch> dispatches;
+  const std::vector<uint32_t> words = layOutTiles(r, plan, dispatches);
+  if (words != r.tileOrderWords) {
+    VK_CHECK(vkDeviceWaitIdle(r.device.device));
+    writeTileOrder(r, words);
+  }
+  size_t d = 0;
+  for (const TileKernel& k : plan.kernels) {
+    const CachedPipeline& p = cachedPipeline(r, tileKernelKey(key, k.kinds));
+    for (size_t n = 0; n < (k.tiles.size() + TILE_ORDER_CHUNK - 1) / TILE_ORDER_CHUNK; ++n, ++d) {
+      dispatches[d].key = p.key;
+      dispatches[d].pipeline = p.pipeline;
+    }
+  }
+  r.tileDispatches = std::move(dispatches);
+  r.pipeline = r.tileDispatches[0].pipeline;
+  r.pipelineKey = r.tileDispatches[0].key;
 }
 
 bool pipelineWarm(const Renderer& r, const KernelKey& key) {
@@ -365,10 +421,10 @@ bool pipelineWarm(const Renderer& r, const KernelKey& key) {
 void warmPipeline(Renderer& r, const KernelKey& key) {
   CachedPipeline& p = cachedPipeline(r, key);
   if (p.dispatched) return;
-  // One workgroup past the image's right edge: every invocation returns at once, nothing is
-  // written, but lavapipe compiles the kernel for the bound resources.
+  // One workgroup past the image's right edge (a tile kernel's: tile TILE_ORDER_NONE): nothing
+  // is written, but lavapipe compiles the kernel for the bound resources.
   VkCommandBuffer cmd = beginCommands(r.device);
-  bindAndDispatch(r, cmd, p.pipeline, (r.width + WORKGROUP_X - 1) / WORKGROUP_X, 1, 1);
+  bindAndDispatch(r, cmd, p.pipeline, p.key.tileOrder ? 0 : (r.width + WORKGROUP_X - 1) / WORKGROUP_X, 1, 1, 0);
   submitAndWait(r.device, cmd);
   p.dispatched = true;
 }
@@ -392,8 +448,10 @@ void renderFrame(Renderer& r) {
     vkCmdResetQueryPool(cmd, r.timestamps, 0, 2);
     vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, r.timestamps, 0);
   }
-  bindAndDispatch(r, cmd, r.pipeline, 0, (r.width + WORKGROUP_X - 1) / WORKGROUP_X,
-                  (bandHeight(r) + WORKGROUP_Y - 1) / WORKGROUP_Y);
+  if (r.tileDispatches.empty())
+    bindAndDispatch(r, cmd, r.pipeline, 0, (r.width + WORKGROUP_X - 1) / WORKGROUP_X,
+                    (bandHeight(r) + WORKGROUP_Y - 1) / WORKGROUP_Y);
+  for (const TileDispatch& d : r.tileDispatches) bindAndDispatch(r, cmd, d.pipeline, 0, d.count, 1, d.offset);
   if (r.timestamps) vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, r.timestamps, 1);
   VkMemoryBarrier toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER};  // the status word
   toHost.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
@@ -403,6 +461,7 @@ void renderFrame(Renderer& r) {
   submitAndWait(r.device, cmd);
   checkLoopBudget(r);
   cachedPipeline(r, r.pipelineKey).dispatched = true;
+  for (const TileDispatch& d : r.tileDispatches) cachedPipeline(r, d.key).dispatched = true;
   r.lastFrameMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   uint64_t ticks[2] = {0, 0};
   if (r.timestamps && vkGetQueryPoolResults(r.device.device, r.timestamps, 0, 2, sizeof(ticks), ticks,

@@ -6,6 +6,7 @@
 #include "gpu_scene.h"
 #include "pipeline.h"
 #include "resources.h"
+#include "tile_kernels.h"
 
 #include <cstdint>
 #include <vector>
@@ -20,6 +21,14 @@ struct CachedPipeline {
   KernelKey key;
   VkPipeline pipeline = VK_NULL_HANDLE;
   bool dispatched = false;  // lavapipe compiles to machine code at the first dispatch
+};
+
+// One dispatch of a tile kernel (tile_kernels.h): its workgroups render the `count` tiles of the
+// tile order from byte `offset` (the dynamic offset of BINDING_TILE_ORDER).
+struct TileDispatch {
+  KernelKey key;
+  VkPipeline pipeline = VK_NULL_HANDLE;
+  uint32_t offset = 0, count = 0;
 };
 
 struct Renderer {
@@ -38,6 +47,11 @@ struct Renderer {
   // blocks' sizes, its nodes and the spheres in storage buffers (else 16-byte placeholders).
   Buffer tree, treeStorage, sphereStorage;
   Buffer tileRanges, tileSpheres;  // primary rays' per-tile sphere lists (placeholders without)
+  // The tile kernels' tiles (BINDING_TILE_ORDER; word 0 TILE_ORDER_NONE), as last written, and
+  // their dispatches; none: `pipeline` renders the whole image.
+  Buffer tileOrder;
+  std::vector<uint32_t> tileOrderWords;
+  std::vector<TileDispatch> tileDispatches;
   Buffer status;  // BINDING_STATUS: what the kernel reports (the loop budget), cleared per frame
   // The float image the host reads: width * height * 4 floats of linear radiance, written by
   // the kernel (BINDING_OUTPUT) or, progressive, by readbackFrame.
@@ -73,6 +87,11 @@ void updateSceneBuffers(Renderer& renderer, const GpuScene& scene);
 // On lavapipe every pipeline counts its loops against the driver's limit (key.loopBudget is set
 // here, for the device).
 void preparePipeline(Renderer& renderer, const KernelKey& key);
+
+// Makes `plan`'s kernels (key specialised to each one's kinds) render the frame, each over its
+// tiles, creating those not created before; a plan without kernels: preparePipeline(key). The
+// image is one band (bandCount 1).
+void prepareTileKernels(Renderer& renderer, const KernelKey& key, const TilePlan& plan);
 
 // Whether the pipeline for `key` exists and has run (lavapipe compiles at the first dispatch).
 bool pipelineWarm(const Renderer& renderer, const KernelKey& key);

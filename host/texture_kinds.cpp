@@ -100,21 +100,21 @@ std::vector<TextureKindInfo> makeKinds() {
   bricks.columns = 4;
   bricks.mortar = 0.1f;
   return {
-      {K::Image, "image", false, false, {kFile, wrap}, defaults(K::Image, glm::vec3(1.0f), glm::vec3(0.0f)), noPeriod},
-      {K::Checker, "checker", false, false, {kColor1, kColor2, kSquares}, checker, noPeriod},
-      {K::SolidChecker, "solid_checker", true, false, {kColor1, kColor2, kSquares}, solidChecker, solidCheckerPeriod},
-      {K::Noise, "noise", true, true, {kColor1, kColor2, kScale}, noise, latticePeriod},
+      {K::Image, "image", false, false, {kFile, wrap}, defaults(K::Image, glm::vec3(1.0f), glm::vec3(0.0f)), noPeriod, 67.0},
+      {K::Checker, "checker", false, false, {kColor1, kColor2, kSquares}, checker, noPeriod, 12.0},
+      {K::SolidChecker, "solid_checker", true, false, {kColor1, kColor2, kSquares}, solidChecker, solidCheckerPeriod, 7.0},
+      {K::Noise, "noise", true, true, {kColor1, kColor2, kScale}, noise, latticePeriod, 77.0},
       {K::Marble, "marble", true, true, noiseKeys,
-       noiseDefaults(K::Marble, {0.9f, 0.88f, 0.85f}, {0.15f, 0.12f, 0.2f}, 4.0f, 6.0f, 6), latticePeriod},
+       noiseDefaults(K::Marble, {0.9f, 0.88f, 0.85f}, {0.15f, 0.12f, 0.2f}, 4.0f, 6.0f, 6), latticePeriod, 101.0},
       // Wood's rings are not periodic.
       {K::Wood, "wood", true, true, noiseKeys,
-       noiseDefaults(K::Wood, {0.75f, 0.5f, 0.25f}, {0.35f, 0.18f, 0.07f}, 8.0f, 0.25f, 4), noPeriod},
+       noiseDefaults(K::Wood, {0.75f, 0.5f, 0.25f}, {0.35f, 0.18f, 0.07f}, 8.0f, 0.25f, 4), noPeriod, 94.0},
       {K::Turbulence, "turbulence", true, true, noiseKeys,
-       noiseDefaults(K::Turbulence, turbulence1, turbulence2, 6.0f, 1.25f, 6), latticePeriod},
+       noiseDefaults(K::Turbulence, turbulence1, turbulence2, 6.0f, 1.25f, 6), latticePeriod, 92.0},
       // Derivative turbulence damps octaves on slopes, so it needs more gain for the same contrast.
       {K::DTurbulence, "dturbulence", true, true, noiseKeys,
-       noiseDefaults(K::DTurbulence, turbulence1, turbulence2, 6.0f, 2.5f, 6), latticePeriod},
-      {K::Bricks, "bricks", false, false, {kColor1, kColor2, kColumns, kMortar}, bricks, noPeriod},
+       noiseDefaults(K::DTurbulence, turbulence1, turbulence2, 6.0f, 2.5f, 6), latticePeriod, 128.0},
+      {K::Bricks, "bricks", false, false, {kColor1, kColor2, kColumns, kMortar}, bricks, noPeriod, 11.0},
   };
 }
 

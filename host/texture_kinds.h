@@ -53,6 +53,10 @@ struct TextureKindInfo {
   // The period of the pattern in solid coordinates, 0 if none (the host reduces the camera's
   // offset modulo it, in double, so the pattern stays exact far from the origin).
   double (*solidPeriod)(const TextureDesc&);
+  // x86 instructions per pixel its code adds to a point-sampled kernel on lavapipe, for every
+  // pixel the kernel renders, whatever the pixel shows (tile_kernels.h; measured:
+  // docs/performance.md, "Tile kernels").
+  double kernelCost = 0;
 };
 
 // Every kind but TextureKind::None, in TEX_* order.

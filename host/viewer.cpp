@@ -261,6 +261,32 @@ KernelKey viewerKey(const GpuScene& packed, const Scene& scene, const RenderJob&
   return key;
 }
 
+// The kinds of the viewer's tile kernels for `key` (tile_kernels.h): on lavapipe, where a tile
+// no sphere reaches saves (sphereFreeTilesSave), the planes' kinds alone and all, whatever the
+// camera, so a camera move never needs another kernel. None (the one kernel) elsewhere.
+std::vector<TextureKinds> viewerTileSets(const Renderer& renderer, const KernelKey& key) {
+  const TextureKinds all{key.shape.sphereKinds, key.shape.planeKinds};
+  if (!renderer.device.lavapipe || !sphereFreeTilesSave(all)) return {};
+  return sphereFreeTileKernels(all);
+}
+
+// The kernels of the frames of `scene`.
+std::vector<KernelKey> viewerKernels(const Renderer& renderer, const GpuScene& packed, const Scene& scene,
+                                     const RenderJob& job) {
+  const KernelKey key = viewerKey(packed, scene, job);
+  const std::vector<TextureKinds> sets = viewerTileSets(renderer, key);
+  if (sets.empty()) return {key};
+  std::vector<KernelKey> keys;
+  for (const TextureKinds& kinds : sets) keys.push_back(tileKernelKey(key, kinds));
+  return keys;
+}
+
+// The tiles of viewerKernels' kernels for the camera as packed (none: the one kernel).
+TilePlan viewerTilePlan(const Renderer& renderer, const GpuScene& packed, const Scene& scene, const RenderJob& job) {
+  const std::vector<TextureKinds> sets = viewerTileSets(renderer, viewerKey(packed, scene, job));
+  return sets.empty() ? TilePlan{} : assignTiles(sets, tileKinds(packed), packed.tiles.columns);
+}
+
 // A pipeline a key could need next that has not run yet: the course materials on the sphere,
 // then on the plane. False when all are ready.
 bool nextPipelineToWarm(const ViewerState& state, const Renderer& renderer, const RenderJob& job,
@@ -274,8 +300,11 @@ bool nextPipelineToWarm(const ViewerState& state, const Renderer& renderer, cons
         for (Plane& p : switched.planes) p.material = index;
       else
         for (Sphere& s : switched.spheres) s.material = index;
-      *key = viewerKey(packed, switched, job);
-      if (!pipelineWarm(renderer, *key)) return true;
+      for (const KernelKey& k : viewerKernels(renderer, packed, switched, job))
+        if (!pipelineWarm(renderer, k)) {
+          *key = k;
+          return true;
+        }
     }
   return false;
 }
@@ -354,6 +383,7 @@ int runViewer(const RenderOptions& options) {
     const uint32_t target = job.samplesPerSide * job.samplesPerSide;
     uint32_t samples = 0;  // accumulated in the image on screen
     GpuScene gpuScene;
+    TilePlan tilePlan;  // the frame's tile kernels for the camera as packed
     auto lastTitle = Clock::now() - std::chrono::seconds(1);
     auto frameStart = Clock::now();
     std::vector<std::filesystem::file_time_type> times = fileTimes(state.scene);
@@ -389,18 +419,20 @@ int runViewer(const RenderOptions& options) {
         }
         packCamera(gpuScene, state.scene, size.width, size.height);
         uploadScene(renderer, gpuScene);
+        tilePlan = viewerTilePlan(renderer, gpuScene, state.scene, job);
         state.dirty = state.cameraMoved = false;
         samples = 0;
       } else if (state.cameraMoved) {  // camera-relative positions and material indices
         packCamera(gpuScene, state.scene, size.width, size.height);
         updateSceneBuffers(renderer, gpuScene);
+        tilePlan = viewerTilePlan(renderer, gpuScene, state.scene, job);
         state.cameraMoved = false;
         samples = 0;
       }
       if (options.frames && samples == target) samples = 0;  // --frames: keep rendering
       bool render = samples < target;
       if (render) {
-        preparePipeline(renderer, viewerKey(gpuScene, state.scene, job));
+        prepareTileKernels(renderer, viewerKey(gpuScene, state.scene, job), tilePlan);
         renderSample(renderer, samples++);
         stats.gpuMs.push_back(renderer.lastFrameMs);
       }

@@ -50,6 +50,16 @@ using uvec4 = glm::uvec4;
 // and the entries (indices of spheres). 16-byte placeholders without them.
 #define BINDING_TILE_RANGES 14   // storage uint[2 * tiles]
 #define BINDING_TILE_SPHERES 15  // storage uint[]
+// Tile kernels (SPEC_TILE_ORDER, host/tile_kernels.h): a frame dispatched as up to
+// MAX_TILE_KERNELS kernels, each over its own tiles and specialised to the texture kinds those
+// tiles can show. Workgroup x of a dispatch renders tile word x of the block bound at the
+// dispatch's dynamic offset: its column | row << 16, or TILE_ORDER_NONE (nothing). A uniform
+// block, not a storage buffer: lavapipe then treats the tile as the group's, not computed lane
+// by lane (docs/performance.md, "Tile kernels"). Offset 0 holds TILE_ORDER_NONE.
+#define BINDING_TILE_ORDER 16  // uniform, dynamic: uvec4[TILE_ORDER_CHUNK / 4], 4 words each
+#define MAX_TILE_KERNELS 4u
+#define TILE_ORDER_CHUNK 16384u  // tiles one dispatch renders at most: 64 KiB of words
+#define TILE_ORDER_NONE 0xFFFFFFFFu
 
 // What one render can hold: the uniform blocks' sizes, each within the 64 KiB of
 // maxUniformBufferRange on lavapipe and NVIDIA (buildGpuScene reports a scene over them).
@@ -127,6 +137,7 @@ using uvec4 = glm::uvec4;
 #define SPEC_SPHERE_TREE 12  // SPHERE_TREE_*
 #define SPEC_LOOP_BUDGET 13  // loop passes a SIMD group may make (0: not counted)
 #define SPEC_TILE_LISTS 14   // 1: primary rays test their tile's spheres (BINDING_TILE_*)
+#define SPEC_TILE_ORDER 15   // 1: workgroups render the tiles of BINDING_TILE_ORDER (tile kernels)
 
 // Scenes with at most this many spheres, planes or lights get kernels with the count
 // built in (the loops over them unrolled); larger ones loop to Frame's count. On lavapipe a

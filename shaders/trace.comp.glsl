@@ -32,6 +32,7 @@ layout(constant_id = SPEC_BAKED_MATERIAL_COUNT) const uint BAKED_MATERIAL_COUNT 
 layout(constant_id = SPEC_SPHERE_TREE) const uint SPHERE_TREE = SPHERE_TREE_NONE;
 layout(constant_id = SPEC_LOOP_BUDGET) const uint LOOP_BUDGET = 0u;
 layout(constant_id = SPEC_TILE_LISTS) const bool TILE_LISTS = false;
+layout(constant_id = SPEC_TILE_ORDER) const bool TILE_ORDER = false;
 
 layout(std430, binding = BINDING_OUTPUT) writeonly buffer OutputBlock { vec4 outputPixels[]; };
 layout(std140, binding = BINDING_FRAME) uniform FrameBlock { Frame frameBlock; };
@@ -49,6 +50,7 @@ layout(std430, binding = BINDING_SPHERE_STORAGE) readonly buffer SphereStorage {
 layout(std430, binding = BINDING_STATUS) buffer StatusBlock { uint status[STATUS_WORDS]; };
 layout(std430, binding = BINDING_TILE_RANGES) readonly buffer TileRanges { uint tileRanges[]; };
 layout(std430, binding = BINDING_TILE_SPHERES) readonly buffer TileSpheres { uint tileSpheres[]; };
+layout(std140, binding = BINDING_TILE_ORDER) uniform TileOrderBlock { uvec4 tileOrder[TILE_ORDER_CHUNK / 4u]; };
 
 #include "baked.glsl"
 
@@ -222,12 +224,21 @@ uint displayPixel(vec3 linear) {
   return packUnorm4x8(frame.displayBgra != 0u ? vec4(srgb.bgr, 1.0) : vec4(srgb, 1.0));
 }
 
+// The invocation's pixel in the band: from its place in the dispatch, or, in a tile kernel,
+// from the tile its workgroup reads (one load from a uniform block, the same for the whole
+// group, before any branch). TILE_ORDER_NONE lands far below the image: nothing is stored.
+uvec2 invocationPixel() {
+  if (!TILE_ORDER) return gl_GlobalInvocationID.xy;
+  const uint tile = tileOrder[gl_WorkGroupID.x / 4u][gl_WorkGroupID.x % 4u];
+  return uvec2(tile & 0xFFFFu, tile >> 16u) * TILE_SIZE + gl_LocalInvocationID.xy;
+}
+
 void main() {
   cacheScene();
   // Invocations past the image's edge (in the last workgroups) trace the edge pixel and store
   // nothing: an early return would put all that follows in divergent control flow. Rows are
   // counted from the band's first (frame.rowOffset), and so is the output's row.
-  uvec2 id = gl_GlobalInvocationID.xy;
+  uvec2 id = invocationPixel();
   bool inside = id.x < frame.width && id.y < frame.bandRows;
   uvec2 pixel = min(id + uvec2(0u, frame.rowOffset), uvec2(frame.width, frame.height) - 1u);
   uint outputIndex = (pixel.y - frame.rowOffset) * frame.width + pixel.x;

@@ -3,6 +3,7 @@
 // camera; over them (spheres and nodes in storage buffers) it hits what the float64
 // reference hits.
 #include "gpu_fixture.h"
+#include "sphere_field.h"
 #include "gpu_scene.h"
 #include "parser.h"
 #include "reference.h"
@@ -15,29 +16,6 @@
 #include <string>
 
 namespace {
-
-const std::string kSourceDir = RAYTEX_SOURCE_DIR;
-
-// A field of `n` small spheres of the course's materials on the checker floor, as
-// bench/sphere_field.py makes them, seen from `eye`.
-Scene field(int n, const std::string& eye, const std::string& lookat = "(0, -1.5, -6)") {
-  std::mt19937 rng{uint32_t(n)};
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
-  const char* materials[] = {"anImage", "aChecker", "aSolidChecker", "aNoise", "aMarble", "aWood", "aTurbulence",
-                             "aDturbulence"};
-  const double side = 2.0 * std::sqrt(double(n));
-  std::string text = "#include \"texture_include.cfg\"\n"
-                     "camera { eye = " + eye + "; lookat = " + lookat + "; up = (0, 1, 0); fov = 35; }\n"
-                     "light { position = (-6, 10, 6); color = (1, 1, 1); }\n"
-                     "plane { normal = (0, 1, 0); distance = -2; tex_scale = 5; aChecker; }\n";
-  for (int i = 0; i < n; ++i) {
-    const double r = 0.1 + 0.2 * unit(rng);
-    const double x = (unit(rng) - 0.5) * side, z = -unit(rng) * side;
-    text += "sphere { center = (" + std::to_string(x) + ", " + std::to_string(-2.0 + r) + ", " + std::to_string(z) +
-            "); radius = " + std::to_string(r) + "; " + materials[i % 8] + "; }\n";
-  }
-  return parseSceneText(text, kSourceDir + "/scenes/sphere-tree-test.cfg");
-}
 
 class SphereTreeTest : public RenderTest {
  protected:
