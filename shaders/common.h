@@ -92,9 +92,9 @@ using uvec4 = glm::uvec4;
 #define TILE_LIST_MAX 32u
 #define TILE_USE_TREE 0xFFFFFFFFu
 #define TILE_FILL_LIMIT 64u
-// Scenes with at least this many spheres walk the tree (measured: docs/performance.md, "The
-// sphere tree"); fewer keep the loop, specialised to their count where it is small.
-#define SPHERE_TREE_MIN_SPHERES 28
+// Scenes with more spheres than the loop is specialised to (MAX_SPECIALISED_COUNT) walk the tree
+// (measured: docs/performance.md, "The sphere tree"); fewer keep the loop, unrolled.
+#define SPHERE_TREE_MIN_SPHERES 9
 
 // Lavapipe ends a kernel's loops after 65 535 passes per SIMD group, counted over every loop of
 // the kernel, and silently drops the rest of its work. Kernels built with SPEC_LOOP_BUDGET > 0

@@ -258,22 +258,22 @@ TEST(GpuScene, MoreObjectsOrLightsThanTheKernelHoldsIsASceneError) {
 }
 
 TEST(SceneLimits, MoreIntersectionTestsPerSampleThanLavapipeLoopsOverIsASceneError) {
-  // 256 planes and 11 spheres (too few for a sphere tree): 241 lights are fine ((241 + 1) x 268
-  // = 64856), the 242nd is over (65124).
+  // 256 planes and 8 spheres (too few for a sphere tree): 244 lights are fine ((244 + 1) x 265
+  // = 64925), the 245th is over (65190).
   std::string text;
   for (int i = 0; i < 256; ++i) text += "plane { normal = (0, 1, 0); distance = " + std::to_string(-i) + "; }\n";
-  for (int i = 0; i < 11; ++i) text += "sphere { center = (" + std::to_string(i) + ", 0, 0); radius = 0.5; }\n";
-  for (int i = 0; i < 241; ++i) text += "light { position = (0, 10, 0); color = (0.001, 0.001, 0.001); }\n";
+  for (int i = 0; i < 8; ++i) text += "sphere { center = (" + std::to_string(i) + ", 0, 0); radius = 0.5; }\n";
+  for (int i = 0; i < 244; ++i) text += "light { position = (0, 10, 0); color = (0.001, 0.001, 0.001); }\n";
   EXPECT_NO_THROW(checkLoopLimit(parseSceneText(text, "pairs.cfg")));
   text += "light { position = (0, 10, 0); }\n";
   Scene scene = parseSceneText(text, "pairs.cfg");
   EXPECT_NO_THROW(buildGpuScene(scene, 8, 8));  // a limit of one driver, checked with the device
   try {
     checkLoopLimit(scene);
-    ADD_FAILURE() << "no error for 242 lights and 267 objects";
+    ADD_FAILURE() << "no error for 245 lights and 264 objects";
   } catch (const SceneError& e) {
-    EXPECT_EQ(std::string(e.what()), "pairs.cfg:509:1: the scene has 242 lights and 267 objects every ray tests: "
-                                     "(lights + 1) x (objects + 1) = 65124 intersection tests per sample, more than "
+    EXPECT_EQ(std::string(e.what()), "pairs.cfg:509:1: the scene has 245 lights and 264 objects every ray tests: "
+                                     "(lights + 1) x (objects + 1) = 65190 intersection tests per sample, more than "
                                      "the 65000 the lavapipe driver runs");
   }
 }
