@@ -27,18 +27,27 @@ std::map<TextureKinds, uint64_t> kindCounts(const std::vector<TextureKinds>& til
   return counts;
 }
 
-// The cheapest set of `family` that covers `kinds` (family[0] covers all).
-size_t cheapestCover(const std::vector<TextureKinds>& family, const TextureKinds& kinds) {
+// Each set's kindsCost.
+std::vector<double> familyCosts(const std::vector<TextureKinds>& family) {
+  std::vector<double> costs;
+  for (const TextureKinds& kinds : family) costs.push_back(kindsCost(kinds));
+  return costs;
+}
+
+// The cheapest set of `family` (whose costs are `costs`) that covers `kinds` (family[0] covers all).
+size_t cheapestCover(const std::vector<TextureKinds>& family, const std::vector<double>& costs,
+                     const TextureKinds& kinds) {
   size_t best = 0;
   for (size_t k = 1; k < family.size(); ++k)
-    if (family[k].covers(kinds) && kindsCost(family[k]) < kindsCost(family[best])) best = k;
+    if (family[k].covers(kinds) && costs[k] < costs[best]) best = k;
   return best;
 }
 
 // Estimated instructions per pixel over all tiles when each runs its cheapest cover.
 double familyCost(const std::vector<TextureKinds>& family, const std::map<TextureKinds, uint64_t>& counts) {
+  const std::vector<double> costs = familyCosts(family);
   double cost = 0.0;
-  for (const auto& [kinds, count] : counts) cost += double(count) * kindsCost(family[cheapestCover(family, kinds)]);
+  for (const auto& [kinds, count] : counts) cost += double(count) * costs[cheapestCover(family, costs, kinds)];
   return cost;
 }
 
@@ -101,11 +110,11 @@ TilePlan assignTiles(const std::vector<TextureKinds>& family, const std::vector<
   TilePlan plan;
   plan.kernels.resize(family.size());
   for (size_t k = 0; k < family.size(); ++k) plan.kernels[k].kinds = family[k];
+  const std::vector<double> costs = familyCosts(family);
   for (uint32_t t = 0; t < tiles.size(); ++t) {
-    const size_t k = cheapestCover(family, tiles[t]);
+    const size_t k = cheapestCover(family, costs, tiles[t]);
     plan.kernels[k].tiles.push_back(t % columns | (t / columns) << 16);
-    plan.savedInstructions +=
-        double(TILE_SIZE * TILE_SIZE) * (kindsCost(family[0]) - kindsCost(family[k]) - kTileOrderCost);
+    plan.savedInstructions += double(TILE_SIZE * TILE_SIZE) * (costs[0] - costs[k] - kTileOrderCost);
   }
   plan.kernels.erase(std::remove_if(plan.kernels.begin(), plan.kernels.end(),
                                     [](const TileKernel& k) { return k.tiles.empty(); }),

@@ -281,10 +281,12 @@ std::vector<KernelKey> viewerKernels(const Renderer& renderer, const GpuScene& p
   return keys;
 }
 
-// The tiles of viewerKernels' kernels for the camera as packed (none: the one kernel).
-TilePlan viewerTilePlan(const Renderer& renderer, const GpuScene& packed, const Scene& scene, const RenderJob& job) {
-  const std::vector<TextureKinds> sets = viewerTileSets(renderer, viewerKey(packed, scene, job));
-  return sets.empty() ? TilePlan{} : assignTiles(sets, tileKinds(packed), packed.tiles.columns);
+// Makes viewerKernels' kernels current, over their tiles for the camera as packed: after every
+// pack, the only times the key or the tiles change.
+void prepareViewerKernels(Renderer& renderer, const GpuScene& packed, const Scene& scene, const RenderJob& job) {
+  const KernelKey key = viewerKey(packed, scene, job);
+  const std::vector<TextureKinds> sets = viewerTileSets(renderer, key);
+  prepareTileKernels(renderer, key, sets.empty() ? TilePlan{} : assignTiles(sets, tileKinds(packed), packed.tiles.columns));
 }
 
 // A pipeline a key could need next that has not run yet: the course materials on the sphere,
@@ -383,7 +385,6 @@ int runViewer(const RenderOptions& options) {
     const uint32_t target = job.samplesPerSide * job.samplesPerSide;
     uint32_t samples = 0;  // accumulated in the image on screen
     GpuScene gpuScene;
-    TilePlan tilePlan;  // the frame's tile kernels for the camera as packed
     auto lastTitle = Clock::now() - std::chrono::seconds(1);
     auto frameStart = Clock::now();
     std::vector<std::filesystem::file_time_type> times = fileTimes(state.scene);
@@ -419,20 +420,19 @@ int runViewer(const RenderOptions& options) {
         }
         packCamera(gpuScene, state.scene, size.width, size.height);
         uploadScene(renderer, gpuScene);
-        tilePlan = viewerTilePlan(renderer, gpuScene, state.scene, job);
+        prepareViewerKernels(renderer, gpuScene, state.scene, job);
         state.dirty = state.cameraMoved = false;
         samples = 0;
       } else if (state.cameraMoved) {  // camera-relative positions and material indices
         packCamera(gpuScene, state.scene, size.width, size.height);
         updateSceneBuffers(renderer, gpuScene);
-        tilePlan = viewerTilePlan(renderer, gpuScene, state.scene, job);
+        prepareViewerKernels(renderer, gpuScene, state.scene, job);
         state.cameraMoved = false;
         samples = 0;
       }
       if (options.frames && samples == target) samples = 0;  // --frames: keep rendering
       bool render = samples < target;
       if (render) {
-        prepareTileKernels(renderer, viewerKey(gpuScene, state.scene, job), tilePlan);
         renderSample(renderer, samples++);
         stats.gpuMs.push_back(renderer.lastFrameMs);
       }
