@@ -4,6 +4,7 @@
 #include "plane_frame.h"
 #include "noise_permutation.h"
 #include "scene_limits.h"
+#include "shadow_lists.h"
 #include "texture_kinds.h"
 
 #include <glm/geometric.hpp>
@@ -228,8 +229,10 @@ void packCamera(GpuScene& g, const Scene& scene, uint32_t width, uint32_t height
   if (g.shape.sphereTree != SPHERE_TREE_NONE) layoutSphereTree(g.sphereTree, g.spheres, g.treeNodes);
   // The lists also tell the tile kernels which kinds a tile can show (tile_kernels.h).
   g.tiles = g.spheres.empty() ? TileLists{} : buildTileLists(f, g.spheres);
+  if (g.shape.shadowLists) appendShadowLists(f, g.spheres, g.planes, g.lights, g.treeNodes, g.tiles);
   f.treeNodeCount = uint32_t(g.treeNodes.size());
   f.tileColumns = g.tiles.columns;
+  f.shadowRanges = g.tiles.shadowRanges;
   f.sphereCount = uint32_t(g.spheres.size());
   f.planeCount = uint32_t(g.planes.size());
   f.lightCount = uint32_t(g.lights.size());

@@ -2,6 +2,7 @@
 
 #include "gpu_scene.h"
 #include "gpu_tree.h"
+#include "shadow_lists.h"
 
 #include <algorithm>
 #include <cstring>
@@ -45,6 +46,7 @@ SceneShape sceneShape(const Scene& scene) {
   shape.lightCount = count(scene.lights.size());
   shape.sphereTree = sphereTreeFor(scene.spheres.size());
   shape.tileLists = shape.sphereTree != SPHERE_TREE_NONE;
+  shape.shadowLists = shape.tileLists && shadowListsFit(scene.lights.size(), scene.planes.size());
   // A plane's tex_scale and tex_offset, and its turn of (u, v) and the image, are folded into
   // what it packs anyway; its turned solid coordinate and a sphere's placement are not.
   const TexturePlacement none;

@@ -103,6 +103,7 @@ VkPipeline createTracePipeline(const Device& device, VkPipelineLayout layout, co
       {SPEC_SPHERE_TREE, offsetof(KernelKey, shape.sphereTree), sizeof(uint32_t)},
       {SPEC_LOOP_BUDGET, offsetof(KernelKey, loopBudget), sizeof(uint32_t)},
       {SPEC_TILE_LISTS, offsetof(KernelKey, shape.tileLists), sizeof(VkBool32)},
+      {SPEC_SHADOW_LISTS, offsetof(KernelKey, shape.shadowLists), sizeof(VkBool32)},
       {SPEC_TILE_ORDER, offsetof(KernelKey, tileOrder), sizeof(VkBool32)},
       {SPEC_OUTPUT_MODE, offsetof(KernelKey, outputMode), sizeof(uint32_t)},
       {SPEC_SAMPLES_PER_SIDE, offsetof(KernelKey, samplesPerSide), sizeof(uint32_t)},

@@ -60,7 +60,7 @@ std::vector<TextureKinds> tileKinds(const GpuScene& g) {
   for (const gpu::Plane& p : g.planes) planes.plane |= kindBit(g.materials[p.material]);
   for (const gpu::Sphere& s : g.spheres) spheres.sphere |= kindBit(g.materials[s.material]);
   std::vector<TextureKinds> kinds(tiles, planes);
-  for (size_t t = 0; t < tiles && lists.ranges.size() == 2 * tiles; ++t) {
+  for (size_t t = 0; t < tiles && lists.ranges.size() >= 2 * tiles; ++t) {
     const uint32_t first = lists.ranges[2 * t], count = lists.ranges[2 * t + 1];
     if (count == TILE_USE_TREE) {
       kinds[t].sphere = spheres.sphere;

@@ -5,23 +5,19 @@
 #include <algorithm>
 #include <cmath>
 
-namespace {
-
-struct TileRect {
-  uint32_t x0 = 0, y0 = 0, x1 = 0, y1 = 0;  // tiles [x0, x1] x [y0, y1]
-};
-
-// The tiles a sphere's screen bounds touch: the film positions of its bounding cube's corners,
-// its radius grown by 1e-4 of its size and distance and the bounds by a pixel, far beyond the
-// float rounding of the kernel's rays and sphere test. All tiles if a corner is not in front.
-TileRect tilesOf(const gpu::Frame& f, const gpu::Sphere& s, uint32_t columns, uint32_t rows) {
+ViewSides viewSides(const gpu::Frame& f) {
   const glm::dvec3 forward(f.cameraForward), right(f.cameraRight), up(f.cameraUp);
-  const glm::dvec3 c(s.centerRadius);
-  const double r = double(s.centerRadius.w) + 1e-4 * (glm::length(c) + double(s.centerRadius.w));
+  const double px = 1.0 + 4.0 / f.width, py = 1.0 + 4.0 / f.height;
+  const glm::dvec3 r = right / glm::dot(right, right), u = up / glm::dot(up, up);
+  return {{px * forward - r, px * forward + r, py * forward - u, py * forward + u}};
+}
+
+TileRect tilesOfPoints(const gpu::Frame& f, const glm::dvec3* points, size_t count, uint32_t columns, uint32_t rows) {
+  const glm::dvec3 forward(f.cameraForward), right(f.cameraRight), up(f.cameraUp);
   const TileRect all{0, 0, columns - 1, rows - 1};
   double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
-  for (int corner = 0; corner < 8; ++corner) {
-    const glm::dvec3 q = c + r * glm::dvec3(corner & 1 ? 1 : -1, corner & 2 ? 1 : -1, corner & 4 ? 1 : -1);
+  for (size_t i = 0; i < count; ++i) {
+    const glm::dvec3 q = points[i];
     const double z = glm::dot(q, forward);
     if (!(z > 1e-6 * glm::length(q))) return all;
     const double ndcX = glm::dot(q, right) / (glm::dot(right, right) * z);
@@ -29,15 +25,25 @@ TileRect tilesOf(const gpu::Frame& f, const gpu::Sphere& s, uint32_t columns, ui
     const double x = (ndcX + 1.0) * 0.5 * f.width, y = (1.0 - ndcY) * 0.5 * f.height;
     x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
   }
-  if (!(x1 >= -1.0 && y1 >= -1.0 && x0 <= f.width + 1.0 && y0 <= f.height + 1.0)) return {1, 1, 0, 0};  // off screen
-  auto tile = [](double v, uint32_t count) {
-    return uint32_t(std::clamp(std::floor(v / TILE_SIZE), 0.0, double(count - 1)));
-  };
+  if (!(x1 >= -1.0 && y1 >= -1.0 && x0 <= f.width + 1.0 && y0 <= f.height + 1.0)) return {};  // off screen
+  auto tile = [](double v, uint32_t n) { return uint32_t(std::clamp(std::floor(v / TILE_SIZE), 0.0, double(n - 1))); };
   return {tile(x0 - 1.0, columns), tile(y0 - 1.0, rows), tile(x1 + 1.0, columns), tile(y1 + 1.0, rows)};
 }
 
-uint64_t area(const TileRect& t) {
-  return t.x1 < t.x0 || t.y1 < t.y0 ? 0 : uint64_t(t.x1 - t.x0 + 1) * (t.y1 - t.y0 + 1);
+namespace {
+
+// The tiles a sphere's screen bounds touch: the film positions of its bounding cube's corners,
+// its radius grown by 1e-4 of its size and distance and the bounds by a pixel, far beyond the
+// float rounding of the kernel's rays and sphere test. None if it lies outside the view, all
+// tiles if it is in the view and a corner is not in front.
+TileRect tilesOf(const gpu::Frame& f, const ViewSides& view, const gpu::Sphere& s, uint32_t columns, uint32_t rows) {
+  const glm::dvec3 c(s.centerRadius);
+  const double r = double(s.centerRadius.w) + 1e-4 * (glm::length(c) + double(s.centerRadius.w));
+  for (const glm::dvec3& side : view.inward)
+    if (glm::dot(side, c) < -r * glm::length(side)) return {};
+  glm::dvec3 corners[8];
+  for (int k = 0; k < 8; ++k) corners[k] = c + r * glm::dvec3(k & 1 ? 1 : -1, k & 2 ? 1 : -1, k & 4 ? 1 : -1);
+  return tilesOfPoints(f, corners, 8, columns, rows);
 }
 
 }  // namespace
@@ -49,9 +55,10 @@ TileLists buildTileLists(const gpu::Frame& f, const std::vector<gpu::Sphere>& sp
   const size_t tiles = size_t(lists.columns) * lists.rows;
   std::vector<TileRect> rects(spheres.size());
   uint64_t entries = 0;
+  const ViewSides view = viewSides(f);
   for (size_t i = 0; i < spheres.size(); ++i) {
-    rects[i] = tilesOf(f, spheres[i], lists.columns, lists.rows);
-    entries += area(rects[i]);
+    rects[i] = tilesOf(f, view, spheres[i], lists.columns, lists.rows);
+    entries += rects[i].area();
   }
   std::vector<uint32_t> counts(tiles, 0);
   const bool fill = entries <= uint64_t(TILE_FILL_LIMIT) * tiles;

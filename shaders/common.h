@@ -47,7 +47,8 @@ using uvec4 = glm::uvec4;
 #define BINDING_SPHERE_STORAGE 12  // storage Sphere[] (SPHERE_TREE_STORAGE)
 #define BINDING_STATUS 13          // storage uint[STATUS_WORDS]: what the kernel reports to the host
 // Per-tile sphere lists (SPEC_TILE_LISTS, host/tile_lists.h): per tile its first entry and count,
-// and the entries (indices of spheres). 16-byte placeholders without them.
+// and the entries (indices of spheres); then, with SPEC_SHADOW_LISTS, per tile and light.
+// 16-byte placeholders without them.
 #define BINDING_TILE_RANGES 14   // storage uint[2 * tiles]
 #define BINDING_TILE_SPHERES 15  // storage uint[]
 // Tile kernels (SPEC_TILE_ORDER, host/tile_kernels.h): a frame dispatched as up to
@@ -92,6 +93,12 @@ using uvec4 = glm::uvec4;
 #define TILE_LIST_MAX 32u
 #define TILE_USE_TREE 0xFFFFFFFFu
 #define TILE_FILL_LIMIT 64u
+// Shadow rays of such a scene test the spheres listed for their tile and light
+// (SPEC_SHADOW_LISTS, host/shadow_lists.h), in the same buffers after the primary lists, where
+// the scene has at most SHADOW_LIST_MAX_LIGHTS lights and SHADOW_LIST_MAX_PLANES planes (the
+// host projects every sphere's shadow onto every plane for every light).
+#define SHADOW_LIST_MAX_LIGHTS 4u
+#define SHADOW_LIST_MAX_PLANES 8u
 // Scenes with more spheres than the loop is specialised to (MAX_SPECIALISED_COUNT) walk the tree
 // (measured: docs/performance.md, "The sphere tree"); fewer keep the loop, unrolled.
 #define SPHERE_TREE_MIN_SPHERES 9
@@ -138,6 +145,7 @@ using uvec4 = glm::uvec4;
 #define SPEC_LOOP_BUDGET 13  // loop passes a SIMD group may make (0: not counted)
 #define SPEC_TILE_LISTS 14   // 1: primary rays test their tile's spheres (BINDING_TILE_*)
 #define SPEC_TILE_ORDER 15   // 1: workgroups render the tiles of BINDING_TILE_ORDER (tile kernels)
+#define SPEC_SHADOW_LISTS 16 // 1: shadow rays test their tile's and light's spheres (BINDING_TILE_*)
 
 // Scenes with at most this many spheres, planes or lights get kernels with the count
 // built in (the loops over them unrolled); larger ones loop to Frame's count. On lavapipe a
@@ -225,6 +233,10 @@ struct Frame {
   uint bandRows;
   uint treeNodeCount;  // nodes of the sphere tree (SPEC_SPHERE_TREE)
   uint tileColumns;    // tiles per row of the image (SPEC_TILE_LISTS)
+  uint shadowRanges;   // first word of the shadow lists' ranges in BINDING_TILE_RANGES (SPEC_SHADOW_LISTS)
+  uint pad0;
+  uint pad1;
+  uint pad2;
 };
 
 // Texture placement (docs/textures.md, "Texture placement") is packed by the host in double:
@@ -302,7 +314,7 @@ struct NoiseTable {
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(Frame) == 144, "Frame layout");
+static_assert(sizeof(Frame) == 160, "Frame layout");
 static_assert(sizeof(Sphere) == 64, "Sphere layout");
 static_assert(sizeof(Plane) == 144, "Plane layout");
 static_assert(sizeof(Material) == 112, "Material layout");

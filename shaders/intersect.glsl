@@ -61,10 +61,11 @@ Hit closestHit(vec3 o, vec3 d) {
   return hit;
 }
 
-// True if anything lies on the segment from o along unit d before distance tMax. `passes`: the
+// True if anything lies on the segment from o along unit d before distance tMax, a shadow ray
+// to light `light` (its tile's list of spheres: SHADOW_LISTS). `passes`: the
 // loops' passes for the caller to count (loop_budget.glsl) where the lanes meet again: a lane
 // that returns early passed no later loop, so the busiest lane's sum is the group's.
-bool occluded(vec3 o, vec3 d, float tMax, out uint passes) {
+bool occluded(vec3 o, vec3 d, float tMax, uint light, out uint passes) {
   passes = 1u;  // a masked pass of the second loop (countLoop adds one)
   for (uint i = 0u; SPHERE_TREE == SPHERE_TREE_NONE && i < sphereCount(); ++i) {
     ++passes;
@@ -74,5 +75,6 @@ bool occluded(vec3 o, vec3 d, float tMax, out uint passes) {
     ++passes;
     if (intersectPlane(o, d, planeAt(i).normalDistance, 0.0, tMax) > 0.0) return true;
   }
-  return SPHERE_TREE != SPHERE_TREE_NONE && occludedInTree(o, d, tMax);
+  if (SPHERE_TREE == SPHERE_TREE_NONE) return false;
+  return SHADOW_LISTS ? occludedInTile(o, d, tMax, light) : occludedInTree(o, d, tMax);
 }

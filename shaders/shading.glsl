@@ -75,7 +75,7 @@ vec3 shade(Surface s, Material m, vec3 albedo, vec3 toEye) {
     float nDotL = dot(s.n, l);
     if (nDotL <= 0.0) continue;
     uint passes;
-    bool shadowed = occluded(origin, l, dist, passes);
+    bool shadowed = occluded(origin, l, dist, i, passes);
     if ((SPHERE_TREE == SPHERE_TREE_NONE && SPHERE_COUNT == COUNT_FROM_FRAME) || PLANE_COUNT == COUNT_FROM_FRAME)
       countLoop(passes);
     if (shadowed) continue;

@@ -33,6 +33,7 @@ layout(constant_id = SPEC_SPHERE_TREE) const uint SPHERE_TREE = SPHERE_TREE_NONE
 layout(constant_id = SPEC_LOOP_BUDGET) const uint LOOP_BUDGET = 0u;
 layout(constant_id = SPEC_TILE_LISTS) const bool TILE_LISTS = false;
 layout(constant_id = SPEC_TILE_ORDER) const bool TILE_ORDER = false;
+layout(constant_id = SPEC_SHADOW_LISTS) const bool SHADOW_LISTS = false;
 
 layout(std430, binding = BINDING_OUTPUT) writeonly buffer OutputBlock { vec4 outputPixels[]; };
 layout(std140, binding = BINDING_FRAME) uniform FrameBlock { Frame frameBlock; };
@@ -61,7 +62,7 @@ layout(std140, binding = BINDING_TILE_ORDER) uniform TileOrderBlock { uvec4 tile
 // instructions per pixel by bench/instructions.sh: 374, 340 with the frame copied, 325 also
 // without main's early return, 286 also with the objects and lights copied).
 Frame frame;
-uint primaryTile;  // the pixel's tile (TILE_LISTS), set in main
+uint primaryTile;  // the pixel's tile (TILE_LISTS, SHADOW_LISTS), set in main
 const uint SPHERE_CACHE = SPHERE_COUNT == COUNT_FROM_FRAME || SPHERE_COUNT == 0u ? 1u : SPHERE_COUNT;
 const uint PLANE_CACHE = PLANE_COUNT == COUNT_FROM_FRAME || PLANE_COUNT == 0u ? 1u : PLANE_COUNT;
 const uint LIGHT_CACHE = LIGHT_COUNT == COUNT_FROM_FRAME || LIGHT_COUNT == 0u ? 1u : LIGHT_COUNT;

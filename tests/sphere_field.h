@@ -30,3 +30,27 @@ inline Scene field(int n, const std::string& eye, const std::string& lookat = "(
   return parseSceneText(text, std::string(RAYTEX_SOURCE_DIR) + "/scenes/sphere-field-test.cfg");
 }
 
+// A field with four lights (the course's; one low among the spheres; one above the field's
+// middle; one behind the camera near the floor) and a wall behind it and one beside it.
+inline Scene litField(int n, const std::string& eye) {
+  Scene scene = field(n, eye);
+  const double side = 2.0 * std::sqrt(double(n));
+  auto light = [&](glm::dvec3 p) {
+    Light l;
+    l.position = p;
+    l.color = glm::vec3(0.3f);
+    scene.lights.push_back(l);
+  };
+  light({1.0, -1.6, -0.4 * side});
+  light({0.0, 3.0, -0.5 * side});
+  light({2.0, -1.0, 8.0});
+  auto wall = [&](glm::dvec3 normal, double distance) {
+    Plane p = scene.planes[0];
+    p.normal = normal;
+    p.distance = distance;
+    scene.planes.push_back(p);
+  };
+  wall({0.0, 0.0, 1.0}, -side - 1.0);
+  wall({1.0, 0.0, 0.0}, -0.5 * side - 1.0);
+  return scene;
+}

@@ -19,13 +19,16 @@ namespace {
 
 class SphereTreeTest : public RenderTest {
  protected:
-  // Renders `g` (uploaded as is) with its own kernel, or with the loop over every sphere.
-  std::vector<float> renderPacked(const GpuScene& g, uint32_t mode, uint32_t filter) {
+  // Renders `g` (uploaded as is) with its own kernel; without `shadowLists`, its shadow rays
+  // walk the tree.
+  std::vector<float> renderPacked(const GpuScene& g, uint32_t mode, uint32_t filter, bool shadowLists = true) {
     uploadScene(*renderer_, g);
     KernelOptions kernel;
     kernel.outputMode = mode;
     kernel.filterBox = filter == FILTER_BOX;
-    preparePipeline(*renderer_, kernelKey(g, kernel));
+    KernelKey key = kernelKey(g, kernel);
+    key.shape.shadowLists &= uint32_t(shadowLists);
+    preparePipeline(*renderer_, key);
     renderFrame(*renderer_);
     readbackFrame(*renderer_);
     const float* pixels = framePixels(*renderer_);
@@ -35,6 +38,7 @@ class SphereTreeTest : public RenderTest {
   // The scene packed for the loop over every sphere (in the scene's order, no tree).
   static GpuScene withoutTree(GpuScene g, const Scene& scene) {
     g.shape.sphereTree = SPHERE_TREE_NONE;
+    g.shape.shadowLists = 0;
     g.treeNodes.clear();
     packCamera(g, scene, g.frame.width, g.frame.height);
     return g;
@@ -46,6 +50,17 @@ class SphereTreeTest : public RenderTest {
     EXPECT_NE(tree.shape.sphereTree, uint32_t(SPHERE_TREE_NONE));
     std::vector<float> a = renderPacked(tree, mode, filter);
     std::vector<float> b = renderPacked(withoutTree(tree, scene), mode, filter);
+    return differing(a, b);
+  }
+
+  // Floats that differ between the shadow lists' image and the tree's shadow walk's.
+  size_t shadowDifferences(const Scene& scene, uint32_t w, uint32_t h) {
+    const GpuScene g = buildGpuScene(scene, w, h);
+    EXPECT_TRUE(g.shape.shadowLists);
+    return differing(renderPacked(g, OUTPUT_SHADED, FILTER_POINT), renderPacked(g, OUTPUT_SHADED, FILTER_POINT, false));
+  }
+
+  static size_t differing(const std::vector<float>& a, const std::vector<float>& b) {
     size_t n = 0;
     for (size_t i = 0; i < a.size(); ++i) n += a[i] != b[i];
     return n;
@@ -73,14 +88,15 @@ TEST_F(SphereTreeTest, RendersWhatTheLoopOverEverySphereRenders) {
   EXPECT_EQ(differences(inside, OUTPUT_COORDS, FILTER_POINT, 96, 64), 0u);
 }
 
-// The comparison can fail: a tree whose boxes lose a sphere renders another image.
+// The comparison can fail: a tree whose boxes lose a sphere renders another image (its shadow
+// rays walking the tree: the tile lists leave primary rays none to walk here).
 TEST_F(SphereTreeTest, ABoxThatMissesASphereChangesTheImage) {
   const Scene scene = field(150, "(0, 1, 4)");
   GpuScene g = buildGpuScene(scene, 96, 64);
-  std::vector<float> right = renderPacked(g, OUTPUT_SHADED, FILTER_POINT);
+  std::vector<float> right = renderPacked(g, OUTPUT_SHADED, FILTER_POINT, false);
   for (gpu::BvhNode& n : g.treeNodes)
     if (n.spheres != 0) n.hi = n.lo;  // every leaf box shrunk to a corner
-  std::vector<float> wrong = renderPacked(g, OUTPUT_SHADED, FILTER_POINT);
+  std::vector<float> wrong = renderPacked(g, OUTPUT_SHADED, FILTER_POINT, false);
   EXPECT_NE(right, wrong);
 }
 
@@ -96,6 +112,36 @@ TEST_F(SphereTreeTest, EmptyTileListsChangeTheImage) {
   for (size_t i = 3; i < wrong.size(); i += 4) spheres += wrong[i] == float(HIT_SPHERE);
   EXPECT_NE(right, wrong);
   EXPECT_EQ(spheres, 0u);
+}
+
+// Shadow rays through the per-tile lists (shadow_lists.h) find what the tree's walk finds: the
+// bench's field and one with four lights and two more planes (litField), from the views above.
+TEST_F(SphereTreeTest, ShadowListsRenderWhatTheTreeWalkRenders) {
+  const std::string eyes[] = {"(0, 1, 4)", "(9, 2, -4)", "(-3, 0.5, -14)", "(2, -1.9, 3)", "(0, 8, 2)"};
+  for (int n : {int(SPHERE_TREE_MIN_SPHERES), 150, 1500}) {
+    for (const std::string& eye : eyes) {
+      SCOPED_TRACE(std::to_string(n) + " spheres, eye " + eye);
+      EXPECT_EQ(shadowDifferences(field(n, eye), 128, 72), 0u);
+      EXPECT_EQ(shadowDifferences(litField(n, eye), 128, 72), 0u);
+    }
+  }
+  Scene inside = litField(200, "(0, 1, 4)");
+  const Sphere& s = inside.spheres[7];
+  inside.camera.eye = s.center;
+  inside.camera.lookat = s.center + glm::dvec3(0.3, -0.2, -1.0);
+  SCOPED_TRACE("inside a sphere");
+  EXPECT_EQ(shadowDifferences(inside, 128, 72), 0u);
+}
+
+// The comparison can fail: with every shadow list emptied, the spheres cast no shadows.
+TEST_F(SphereTreeTest, EmptyShadowListsChangeTheImage) {
+  const Scene scene = litField(150, "(0, 1, 4)");
+  GpuScene g = buildGpuScene(scene, 128, 72);
+  ASSERT_TRUE(g.shape.shadowLists);
+  const std::vector<float> right = renderPacked(g, OUTPUT_SHADED, FILTER_POINT);
+  for (size_t t = g.tiles.shadowRanges + 1; t < g.tiles.ranges.size(); t += 2)
+    if (g.tiles.ranges[t] != TILE_USE_TREE) g.tiles.ranges[t] = 0;
+  EXPECT_GT(differing(right, renderPacked(g, OUTPUT_SHADED, FILTER_POINT)), 1000u);
 }
 
 // Over MAX_UNIFORM_SPHERES the spheres and nodes are read from storage buffers: each reliable

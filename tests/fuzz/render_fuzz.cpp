@@ -4,14 +4,17 @@
 // non-finite value (a NaN or infinity written as black) aborts. The pipelines are the
 // unspecialised kernels (every texture kind, counts from Frame, values from the uniform buffers),
 // each created once, so an input costs dispatches and no compilation: the loop over every sphere
-// (where the spheres fit the uniform block) and the sphere tree's walk, which every scene with a
-// sphere also renders through (a tree over a few spheres is as valid as over many). Scenes that
+// (where the spheres fit the uniform block) and the sphere tree's kernel, which every scene with a
+// sphere also renders through (a tree over a few spheres is as valid as over many): primary rays
+// through the tile's list, shadow rays through the tile's and light's lists where the scene has
+// them (shadow_lists.h), the tree where a list is long. Scenes that
 // buildGpuScene refuses (over the kernel's limits, an image that does not load) and renders over
 // lavapipe's loop budget are skipped. Built by RAYTEX_FUZZ_RENDER=ON with clang;
 // tests/fuzz/run.sh render builds and runs it.
 #include "gpu_scene.h"
 #include "parser.h"
 #include "renderer.h"
+#include "shadow_lists.h"
 
 #include <cmath>
 #include <cstddef>
@@ -33,20 +36,28 @@ Renderer& sharedRenderer() {
   return *renderer;
 }
 
-// The scene packed to walk a sphere tree, whatever its number of spheres.
-GpuScene withTree(GpuScene g, const Scene& scene) {
-  if (g.shape.sphereTree != SPHERE_TREE_NONE || scene.spheres.empty()) return g;
-  g.shape.sphereTree = SPHERE_TREE_UNIFORM;
-  g.sphereTree = buildSphereBvh(scene.spheres);
+// The scene packed to walk a sphere tree, whatever its number of spheres: with `lists`, primary
+// rays through tile lists and, where they fit, shadow rays through shadow lists; else every ray
+// walks the tree.
+GpuScene withTree(GpuScene g, const Scene& scene, bool lists) {
+  if (scene.spheres.empty()) return g;
+  if (g.shape.sphereTree == SPHERE_TREE_NONE) {
+    g.shape.sphereTree = SPHERE_TREE_UNIFORM;
+    g.sphereTree = buildSphereBvh(scene.spheres);
+  }
+  g.shape.tileLists = lists;
+  g.shape.shadowLists = lists && shadowListsFit(scene.lights.size(), scene.planes.size());
   packCamera(g, scene, kSize, kSize);
   return g;
 }
 
 // Renders the uploaded scene with `filter` and the scene's way of walking its spheres; aborts on
 // the first non-finite channel.
-void renderFinite(Renderer& renderer, uint32_t sphereTree, uint32_t filter, const std::string& text) {
+void renderFinite(Renderer& renderer, const SceneShape& shape, uint32_t filter, const std::string& text) {
   KernelKey key;  // the unspecialised kernel: every kind, counts read at run time
-  key.shape.sphereTree = sphereTree;
+  key.shape.sphereTree = shape.sphereTree;
+  key.shape.tileLists = shape.tileLists;
+  key.shape.shadowLists = shape.shadowLists;
   key.textureFilter = filter;
   preparePipeline(renderer, key);
   renderFrame(renderer);
@@ -77,10 +88,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   }
   Renderer& renderer = sharedRenderer();
   try {
-    for (const GpuScene& g : {gpuScene, withTree(gpuScene, scene)}) {
+    for (const GpuScene& g : {gpuScene, withTree(gpuScene, scene, false), withTree(gpuScene, scene, true)}) {
       uploadScene(renderer, g);
-      renderFinite(renderer, g.shape.sphereTree, FILTER_POINT, text);
-      renderFinite(renderer, g.shape.sphereTree, FILTER_BOX, text);
+      renderFinite(renderer, g.shape, FILTER_POINT, text);
+      renderFinite(renderer, g.shape, FILTER_BOX, text);
     }
   } catch (const LoopBudgetError&) {
     return 0;  // reported by raytex (exit 1), the image not used

@@ -1,0 +1,276 @@
+#include "shadow_lists.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace {
+
+// A sphere's radius grown by 1e-4 of its size and its distances from the camera and the light:
+// far beyond the float rounding of the kernel's hit points, shadow-ray origins and sphere test.
+double paddedRadius(const gpu::Sphere& s, const glm::dvec3& light) {
+  const glm::dvec3 c(s.centerRadius);
+  const double r = s.centerRadius.w;
+  return r + 1e-4 * (glm::length(c) + r + glm::length(light));
+}
+
+// The cone from a light around a sphere A: every segment from a point of A to the light lies
+// in it, within `length` of the light, and so in the cylinder of radius `reach` around its
+// axis from the apex to that length.
+struct Cone {
+  glm::dvec3 apex, axis;  // axis: unit
+  double sine = 0, cosine = 1, length = 0, reach = 0;
+};
+
+// Whether the ball (c, radius) meets the cone: inside it, or nearer its surface than radius
+// where the closest point of the surface is not the apex.
+bool meetsCone(const Cone& k, const glm::dvec3& c, double radius) {
+  const glm::dvec3 v = c - k.apex;
+  const double distance = glm::length(v);
+  if (distance <= radius) return true;
+  if (distance - radius > k.length) return false;
+  const double along = glm::dot(v, k.axis), across = glm::length(v - along * k.axis);
+  const double outside = across * k.cosine - along * k.sine;  // from the surface, in the plane of axis and v
+  return outside <= radius && along * k.cosine + across * k.sine >= 0.0;
+}
+
+// Whether the box, grown by the cone's reach, meets the cone's axis (slabs): a box that meets
+// the cone does.
+bool mayMeetCone(const Cone& k, const gpu::BvhNode& n) {
+  double enter = 0.0, leave = k.length;
+  for (int a = 0; a < 3; ++a) {
+    const double lo = double(n.lo[a]) - k.reach - k.apex[a], hi = double(n.hi[a]) + k.reach - k.apex[a];
+    if (k.axis[a] == 0.0) {
+      if (lo > 0.0 || hi < 0.0) return false;
+      continue;
+    }
+    const double t0 = lo / k.axis[a], t1 = hi / k.axis[a];
+    enter = std::max(enter, std::min(t0, t1)), leave = std::min(leave, std::max(t0, t1));
+  }
+  return enter <= leave;
+}
+
+// The spheres that meet `cone`, walking the tree as the kernel does (nodes skip to `next`).
+void spheresInCone(const Cone& cone, const std::vector<gpu::Sphere>& spheres, const std::vector<gpu::BvhNode>& nodes,
+                   std::vector<uint32_t>& out) {
+  for (uint32_t i = 0; i < nodes.size();) {
+    const gpu::BvhNode& n = nodes[i];
+    const bool meets = mayMeetCone(cone, n);
+    const uint32_t count = n.spheres >> TREE_LEAF_SHIFT, first = n.spheres & ((1u << TREE_LEAF_SHIFT) - 1u);
+    for (uint32_t k = first; meets && k < first + count; ++k) {
+      const gpu::Sphere& s = spheres[k];
+      if (meetsCone(cone, glm::dvec3(s.centerRadius), paddedRadius(s, cone.apex))) out.push_back(k);
+    }
+    i = meets && count == 0 ? i + 1 : n.next;
+  }
+}
+
+// The tiles of B's shadow on a plane, for a light: the plane's points from which the segment to
+// the light meets B lie in the projection of B's padded bounding cube from the light onto the
+// plane, the hull of its corners' projections; clipped to the view (widened by two pixels)
+// and put on screen. Every tile where the projection is unbounded (B reaches the light's
+// height above the plane), none where B cannot lie between the plane and the light.
+class PlaneShadow {
+ public:
+  PlaneShadow(const gpu::Frame& f, uint32_t columns, uint32_t rows)
+      : f_(f), columns_(columns), rows_(rows), view_(viewSides(f)) {}
+
+  TileRect tiles(const gpu::Sphere& b, const gpu::Plane& plane, const glm::dvec3& light) const {
+    const glm::dvec3 n(plane.normalDistance), c(b.centerRadius);
+    const double r = paddedRadius(b, light), lightHeight = glm::dot(n, light) - plane.normalDistance.w;
+    const TileRect all{0, 0, columns_ - 1, rows_ - 1};
+    if (!(lightHeight != 0.0)) return all;
+    glm::dvec3 points[8];
+    int beyond = 0, above = 0, count = 0;
+    for (int k = 0; k < 8; ++k) {
+      const glm::dvec3 q = c + r * glm::dvec3(k & 1 ? 1 : -1, k & 2 ? 1 : -1, k & 4 ? 1 : -1);
+      const double height = glm::dot(n, q) - plane.normalDistance.w;
+      const double s = lightHeight / (lightHeight - height);  // the plane at light + s (q - light)
+      beyond += height * lightHeight < 0.0;
+      if (!(s > 0.0 && std::isfinite(s))) ++above;
+      else points[count++] = light + s * (q - light);
+    }
+    if (beyond == 8 || above == 8) return {};
+    if (above > 0) return all;
+    if (insideView(points)) return tilesOfPoints(f_, points, 8, columns_, rows_);
+    const std::vector<glm::dvec3> clipped = clipToView(hull(std::vector<glm::dvec3>(points, points + 8), n));
+    return clipped.empty() ? TileRect{} : tilesOfPoints(f_, clipped.data(), clipped.size(), columns_, rows_);
+  }
+
+ private:
+  bool insideView(const glm::dvec3 (&points)[8]) const {
+    for (const glm::dvec3& p : points)
+      for (const glm::dvec3& m : view_.inward)
+        if (!(glm::dot(m, p) >= 0.0)) return false;
+    return true;
+  }
+
+  // The convex hull of points on the plane of normal n, in order (monotone chain).
+  static std::vector<glm::dvec3> hull(std::vector<glm::dvec3> points, const glm::dvec3& n) {
+    const glm::dvec3 t = glm::normalize(glm::cross(n, std::abs(n.x) < 0.6 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0)));
+    const glm::dvec3 b = glm::cross(n, t);
+    auto key = [&](const glm::dvec3& p) { return std::make_pair(glm::dot(p, t), glm::dot(p, b)); };
+    std::sort(points.begin(), points.end(), [&](const glm::dvec3& p, const glm::dvec3& q) { return key(p) < key(q); });
+    auto turn = [&](const glm::dvec3& o, const glm::dvec3& p, const glm::dvec3& q) {
+      return glm::dot(glm::cross(p - o, q - o), n);
+    };
+    std::vector<glm::dvec3> h(2 * points.size());
+    size_t k = 0;
+    for (size_t i = 0; i < points.size(); ++i) {
+      while (k >= 2 && turn(h[k - 2], h[k - 1], points[i]) <= 0.0) --k;
+      h[k++] = points[i];
+    }
+    for (size_t i = points.size() - 1, lower = k + 1; i-- > 0;) {
+      while (k >= lower && turn(h[k - 2], h[k - 1], points[i]) <= 0.0) --k;
+      h[k++] = points[i];
+    }
+    h.resize(k > 1 ? k - 1 : k);
+    return h;
+  }
+
+  // The polygon cut to the view's four sides (Sutherland-Hodgman).
+  std::vector<glm::dvec3> clipToView(std::vector<glm::dvec3> polygon) const {
+    for (const glm::dvec3& m : view_.inward) {
+      std::vector<glm::dvec3> kept;
+      for (size_t i = 0; i < polygon.size(); ++i) {
+        const glm::dvec3 &p = polygon[i], &q = polygon[(i + 1) % polygon.size()];
+        const double dp = glm::dot(m, p), dq = glm::dot(m, q);
+        if (dp >= 0.0) kept.push_back(p);
+        if ((dp >= 0.0) != (dq >= 0.0)) kept.push_back(p + (dp / (dp - dq)) * (q - p));
+      }
+      polygon = std::move(kept);
+    }
+    return polygon;
+  }
+
+  const gpu::Frame& f_;
+  uint32_t columns_, rows_;
+  ViewSides view_;
+};
+
+// Shadow entries gathered per (tile, light) key, in counts-then-fill order (as the primary
+// lists): those from the planes' shadows.
+struct KeyedEntries {
+  std::vector<uint32_t> first, entries;
+};
+
+// tooMany[l]: light l's lists would hold more than TILE_FILL_LIMIT entries a tile on average
+// (spheres above it cast unbounded shadows, say), and its entries are left out.
+KeyedEntries planeShadowEntries(const gpu::Frame& f, const std::vector<gpu::Sphere>& spheres,
+                                const std::vector<gpu::Plane>& planes, const std::vector<gpu::Light>& lights,
+                                const TileLists& lists, std::vector<bool>& tooMany) {
+  const size_t tiles = size_t(lists.columns) * lists.rows, keys = tiles * lights.size();
+  const PlaneShadow shadow(f, lists.columns, lists.rows);
+  struct Rect {
+    uint32_t sphere, light;
+    TileRect tiles;
+  };
+  std::vector<Rect> rects;
+  std::vector<uint64_t> total(lights.size(), 0);
+  for (uint32_t i = 0; i < spheres.size(); ++i)
+    for (const gpu::Plane& p : planes)
+      for (uint32_t l = 0; l < lights.size(); ++l) {
+        const TileRect t = shadow.tiles(spheres[i], p, glm::dvec3(lights[l].position));
+        if (!t.empty()) rects.push_back({i, l, t}), total[l] += t.area();
+      }
+  tooMany.resize(lights.size());
+  for (size_t l = 0; l < lights.size(); ++l) tooMany[l] = total[l] > uint64_t(TILE_FILL_LIMIT) * tiles;
+  rects.erase(std::remove_if(rects.begin(), rects.end(), [&](const Rect& r) { return tooMany[r.light]; }), rects.end());
+  KeyedEntries out;
+  out.first.assign(keys + 1, 0);
+  auto each = [&](const Rect& r, auto&& visit) {
+    for (uint32_t y = r.tiles.y0; y <= r.tiles.y1; ++y)
+      for (uint32_t x = r.tiles.x0; x <= r.tiles.x1; ++x) visit((size_t(y) * lists.columns + x) * lights.size() + r.light);
+  };
+  for (const Rect& r : rects) each(r, [&](size_t key) { ++out.first[key + 1]; });
+  for (size_t k = 0; k < keys; ++k) out.first[k + 1] += out.first[k];
+  std::vector<uint32_t> next(out.first.begin(), out.first.end() - 1);
+  out.entries.resize(out.first[keys]);
+  for (const Rect& r : rects) each(r, [&](size_t key) { out.entries[next[key]++] = r.sphere; });
+  return out;
+}
+
+// Per sphere and light, the spheres that meet the cone from the light around it (found when a
+// tile first needs them); TILE_USE_TREE where the light is within the sphere.
+class Casters {
+ public:
+  Casters(const std::vector<gpu::Sphere>& spheres, const std::vector<gpu::Light>& lights,
+          const std::vector<gpu::BvhNode>& nodes)
+      : spheres_(spheres), lights_(lights), nodes_(nodes), first_(spheres.size() * lights.size(), kUnknown),
+        count_(first_.size(), 0) {}
+
+  // Calls visit(b) for each caster b of sphere a for light l; false where the tile must walk
+  // the tree.
+  template <typename Visit>
+  bool each(uint32_t a, uint32_t l, Visit&& visit) {
+    const size_t key = size_t(a) * lights_.size() + l;
+    if (first_[key] == kUnknown) find(a, l, key);
+    if (count_[key] == TILE_USE_TREE) return false;
+    for (uint32_t k = first_[key]; k < first_[key] + count_[key]; ++k) visit(entries_[k]);
+    return true;
+  }
+
+ private:
+  static constexpr uint32_t kUnknown = ~0u;
+
+  void find(uint32_t a, uint32_t l, size_t key) {
+    const glm::dvec3 light(lights_[l].position), c(spheres_[a].centerRadius);
+    const double r = paddedRadius(spheres_[a], light), distance = glm::length(c - light);
+    first_[key] = uint32_t(entries_.size());
+    if (!(distance > r)) {
+      count_[key] = TILE_USE_TREE;
+      return;
+    }
+    const double sine = r / distance, cosine = std::sqrt(1.0 - sine * sine);
+    const Cone cone{light, (c - light) / distance, sine, cosine, distance + r, (distance + r) * sine / cosine};
+    spheresInCone(cone, spheres_, nodes_, entries_);
+    count_[key] = uint32_t(entries_.size()) - first_[key];
+  }
+
+  const std::vector<gpu::Sphere>& spheres_;
+  const std::vector<gpu::Light>& lights_;
+  const std::vector<gpu::BvhNode>& nodes_;
+  std::vector<uint32_t> first_, count_, entries_;
+};
+
+}  // namespace
+
+bool shadowListsFit(size_t lights, size_t planes) {
+  return lights > 0 && lights <= SHADOW_LIST_MAX_LIGHTS && planes <= SHADOW_LIST_MAX_PLANES;
+}
+
+void appendShadowLists(const gpu::Frame& f, const std::vector<gpu::Sphere>& spheres,
+                       const std::vector<gpu::Plane>& planes, const std::vector<gpu::Light>& lights,
+                       const std::vector<gpu::BvhNode>& nodes, TileLists& lists) {
+  const size_t tiles = size_t(lists.columns) * lists.rows;
+  lists.shadowRanges = uint32_t(lists.ranges.size());
+  lists.ranges.resize(lists.ranges.size() + 2 * tiles * lights.size(), 0);
+  uint32_t* ranges = lists.ranges.data() + lists.shadowRanges;
+  std::vector<bool> tooMany;
+  const KeyedEntries fromPlanes = planeShadowEntries(f, spheres, planes, lights, lists, tooMany);
+  Casters casters(spheres, lights, nodes);
+  std::vector<uint32_t> seen(spheres.size(), ~0u);  // the key a sphere was last listed for
+  std::vector<uint32_t>& out = lists.spheres;
+  out.reserve(out.size() + fromPlanes.entries.size() + tiles);
+  for (size_t t = 0; t < tiles; ++t) {
+    const uint32_t first = lists.ranges[2 * t], count = lists.ranges[2 * t + 1];
+    for (uint32_t l = 0; l < lights.size(); ++l) {
+      const uint32_t key = uint32_t(t * lights.size() + l), start = uint32_t(out.size());
+      ranges[2 * key] = start;
+      if (tooMany[l] || count == TILE_USE_TREE) {
+        ranges[2 * key + 1] = TILE_USE_TREE;
+        continue;
+      }
+      auto add = [&](uint32_t i) {
+        if (seen[i] != key) seen[i] = key, out.push_back(i);
+      };
+      for (uint32_t k = fromPlanes.first[key]; k < fromPlanes.first[key + 1]; ++k) add(fromPlanes.entries[k]);
+      bool listed = true;
+      for (uint32_t i = first; listed && i < first + count; ++i) listed = casters.each(out[i], l, add);
+      listed &= out.size() - start <= TILE_LIST_MAX;
+      ranges[2 * key + 1] = listed ? uint32_t(out.size()) - start : TILE_USE_TREE;
+      if (!listed) out.resize(start);
+    }
+  }
+}

@@ -1,0 +1,86 @@
+// The per-tile shadow lists (host/shadow_lists.cpp) are conservative: every sphere that blocks a
+// pixel's shadow ray in float64 is listed for its tile and light (the device tests in
+// sphere_tree_test.cpp render them against the tree's shadow walk).
+#include "sphere_field.h"
+#include "gpu_scene.h"
+#include "reference.h"
+
+#include <glm/geometric.hpp>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <random>
+#include <string>
+
+namespace {
+
+// Whether sphere i is in the shadow list of (tile, light), or the tile walks the tree.
+bool listed(const TileLists& lists, uint32_t lights, uint32_t tile, uint32_t light, uint32_t i) {
+  const uint32_t* range = &lists.ranges[lists.shadowRanges + 2 * (size_t(tile) * lights + light)];
+  if (range[1] == TILE_USE_TREE) return true;
+  const auto first = lists.spheres.begin() + range[0], last = first + range[1];
+  return std::find(first, last, i) != last;
+}
+
+// The smallest t > 0 where the ray o + t d (d unit) meets the sphere, in double; infinity if none.
+double sphereDistance(glm::dvec3 o, glm::dvec3 d, const gpu::Sphere& s) {
+  const glm::dvec3 f = o - glm::dvec3(s.centerRadius);
+  const double r = s.centerRadius.w, b = glm::dot(f, d), disc = b * b - (glm::dot(f, f) - r * r);
+  if (disc < 0.0) return INFINITY;
+  const double t0 = -b - std::sqrt(disc), t1 = -b + std::sqrt(disc);
+  return t0 > 0.0 ? t0 : t1 > 0.0 ? t1 : INFINITY;
+}
+
+}  // namespace
+
+TEST(ShadowLists, EveryBlockingSphereIsListedForItsTileAndLight) {
+  const uint32_t w = 240, h = 136;
+  std::mt19937 rng{7};
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (const std::string eye : {"(0, 1, 4)", "(9, 2, -4)", "(-3, 0.5, -14)", "(0, 8, 2)"}) {
+    SCOPED_TRACE("eye " + eye);
+    const Scene scene = litField(300, eye);
+    PackOptions options;
+    options.mipmaps = false;
+    const GpuScene g = buildGpuScene(scene, w, h, options);
+    ASSERT_TRUE(g.shape.shadowLists);
+    const TileLists& lists = g.tiles;
+    const uint32_t lights = uint32_t(g.lights.size());
+    ASSERT_EQ(lists.ranges.size(), lists.shadowRanges + 2 * size_t(lists.columns) * lists.rows * lights);
+    int blocked = 0, missing = 0, walks = 0;
+    for (uint32_t t = 0; t < lists.columns * lists.rows; ++t)  // for the course's light
+      walks += lists.ranges[lists.shadowRanges + 2 * t * lights + 1] == TILE_USE_TREE;
+    for (uint32_t y = 0; y < h; ++y)
+      for (uint32_t x = 0; x < w; ++x) {
+        // A point anywhere in the pixel (the samples of --spp), camera-relative.
+        const double fx = (x + unit(rng)) / w * 2.0 - 1.0, fy = 1.0 - (y + unit(rng)) / h * 2.0;
+        const glm::dvec3 d = glm::normalize(glm::dvec3(g.frame.cameraForward) + fx * glm::dvec3(g.frame.cameraRight) +
+                                            fy * glm::dvec3(g.frame.cameraUp));
+        double t = INFINITY;
+        for (const gpu::Sphere& s : g.spheres) t = std::min(t, sphereDistance({}, d, s));
+        for (const gpu::Plane& p : g.planes) {
+          const double tp = double(p.normalDistance.w) / glm::dot(glm::dvec3(p.normalDistance), d);
+          if (tp > 0.0) t = std::min(t, tp);
+        }
+        if (!std::isfinite(t)) continue;
+        const glm::dvec3 point = t * d;
+        const uint32_t tile = (y / TILE_SIZE) * lists.columns + x / TILE_SIZE;
+        for (uint32_t l = 0; l < lights; ++l) {
+          const glm::dvec3 toLight = glm::dvec3(g.lights[l].position) - point;
+          const double distance = glm::length(toLight);
+          for (uint32_t i = 0; i < g.spheres.size(); ++i) {
+            // Offset from the surface, as the kernel's shadow rays are (a sphere's own far side is
+            // not a blocker).
+            const glm::dvec3 dir = toLight / distance;
+            if (!(sphereDistance(point + 1e-6 * distance * dir, dir, g.spheres[i]) < distance)) continue;
+            ++blocked;
+            missing += !listed(lists, lights, tile, l, i);
+          }
+        }
+      }
+    EXPECT_EQ(missing, 0);
+    EXPECT_GT(blocked, int(w * h / 20));
+    EXPECT_LT(walks, int(lists.columns * lists.rows / 4));  // most tiles have lists
+  }
+}
+
