@@ -3,10 +3,15 @@
 #include "common.h"
 // Generated at build time by glslangValidator --vn (CMakeLists.txt, add_spirv).
 #include "trace_box_samples_spv.h"
+#include "trace_box_samples_tree_spv.h"
 #include "trace_box_spv.h"
+#include "trace_box_tree_spv.h"
 #include "trace_debug_spv.h"
+#include "trace_debug_tree_spv.h"
 #include "trace_point_samples_spv.h"
+#include "trace_point_samples_tree_spv.h"
 #include "trace_point_spv.h"
+#include "trace_point_tree_spv.h"
 
 #include <cstddef>
 #include <vector>
@@ -79,12 +84,17 @@ struct SpirvModule {
 #define SPIRV_MODULE(name) SpirvModule{name, sizeof(name)}
 
 // The build variant: debug outputs, or the shaded image with point or box textures, from one
-// sample per dispatch or N x N samples in one (trace.comp.glsl, RAYTEX_SUPERSAMPLE).
+// sample per dispatch or N x N samples in one (trace.comp.glsl, RAYTEX_SUPERSAMPLE); each with
+// the sphere tree's code where the scene walks one (RAYTEX_SPHERE_TREE).
 SpirvModule traceVariant(const KernelKey& key) {
-  if (key.outputMode != OUTPUT_SHADED) return SPIRV_MODULE(trace_debug_spv);
+  const bool tree = key.shape.sphereTree != SPHERE_TREE_NONE;
   const bool samples = key.samplesPerSide > 1 && !key.progressive;
-  if (key.textureFilter == FILTER_BOX) return samples ? SPIRV_MODULE(trace_box_samples_spv) : SPIRV_MODULE(trace_box_spv);
-  return samples ? SPIRV_MODULE(trace_point_samples_spv) : SPIRV_MODULE(trace_point_spv);
+  if (key.outputMode != OUTPUT_SHADED) return tree ? SPIRV_MODULE(trace_debug_tree_spv) : SPIRV_MODULE(trace_debug_spv);
+  if (key.textureFilter == FILTER_BOX && samples)
+    return tree ? SPIRV_MODULE(trace_box_samples_tree_spv) : SPIRV_MODULE(trace_box_samples_spv);
+  if (key.textureFilter == FILTER_BOX) return tree ? SPIRV_MODULE(trace_box_tree_spv) : SPIRV_MODULE(trace_box_spv);
+  if (samples) return tree ? SPIRV_MODULE(trace_point_samples_tree_spv) : SPIRV_MODULE(trace_point_samples_spv);
+  return tree ? SPIRV_MODULE(trace_point_tree_spv) : SPIRV_MODULE(trace_point_spv);
 }
 
 }  // namespace

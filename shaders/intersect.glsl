@@ -35,7 +35,12 @@ float intersectPlane(vec3 o, vec3 dir, vec4 normalDistance, float tMin, float tM
   return (t > tMin && t < tMax) ? t : -1.0;
 }
 
+// The tree's walks and the tile and shadow lists, only in the modules for scenes with a tree
+// (RAYTEX_SPHERE_TREE, CMakeLists.txt): the driver processes a module's every function before
+// the specialisation constants drop what a scene lacks.
+#ifdef RAYTEX_SPHERE_TREE
 #include "sphere_tree.glsl"
+#endif
 
 // The closest hit of a primary ray. With a sphere tree the planes come first: their nearest hit bounds the
 // boxes the walk enters (a floor hides the spheres beyond it). Loops bounded by Frame's counts
@@ -54,10 +59,12 @@ Hit closestHit(vec3 o, vec3 d) {
     if (t > 0.0) hit = Hit(t, HIT_PLANE, i);
   }
   if (PLANE_COUNT == COUNT_FROM_FRAME) countLoop(planeCount());
+#ifdef RAYTEX_SPHERE_TREE
   if (SPHERE_TREE != SPHERE_TREE_NONE) {
     if (TILE_LISTS) closestSphereInTile(o, d, hit);
     else closestSphereInTree(o, d, hit);
   }
+#endif
   return hit;
 }
 
@@ -75,6 +82,8 @@ bool occluded(vec3 o, vec3 d, float tMax, uint light, out uint passes) {
     ++passes;
     if (intersectPlane(o, d, planeAt(i).normalDistance, 0.0, tMax) > 0.0) return true;
   }
-  if (SPHERE_TREE == SPHERE_TREE_NONE) return false;
-  return SHADOW_LISTS ? occludedInTile(o, d, tMax, light) : occludedInTree(o, d, tMax);
+#ifdef RAYTEX_SPHERE_TREE
+  if (SPHERE_TREE != SPHERE_TREE_NONE) return SHADOW_LISTS ? occludedInTile(o, d, tMax, light) : occludedInTree(o, d, tMax);
+#endif
+  return false;
 }

@@ -1,8 +1,10 @@
 // raytex kernel: one primary ray per pixel through a pinhole camera, closest hit
 // among analytic spheres and planes, texture lookup, Phong shading with shadow rays.
-// Built three times (CMakeLists.txt, add_shader_variant): the shaded image with point-sampled
-// textures; with RAYTEX_FILTER_BOX, with textures filtered over footprints (FILTER_BOX); and
-// with RAYTEX_DEBUG_OUTPUT, the outputs the tests compare with the CPU reference.
+// Built as several modules (CMakeLists.txt, add_spirv): the shaded image with point-sampled
+// textures; with RAYTEX_FILTER_BOX, with textures filtered over footprints (FILTER_BOX); with
+// RAYTEX_SUPERSAMPLE, N x N samples in one dispatch; with RAYTEX_DEBUG_OUTPUT, the outputs the
+// tests compare with the CPU reference; each also with RAYTEX_SPHERE_TREE, the sphere tree's
+// walks and the tile and shadow lists (intersect.glsl).
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #extension GL_KHR_shader_subgroup_basic : require
