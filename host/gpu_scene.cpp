@@ -233,6 +233,7 @@ void packCamera(GpuScene& g, const Scene& scene, uint32_t width, uint32_t height
   f.treeNodeCount = uint32_t(g.treeNodes.size());
   f.tileColumns = g.tiles.columns;
   f.shadowRanges = g.tiles.shadowRanges;
+  f.shadowColumns = g.tiles.shadowColumns;
   f.sphereCount = uint32_t(g.spheres.size());
   f.planeCount = uint32_t(g.planes.size());
   f.lightCount = uint32_t(g.lights.size());

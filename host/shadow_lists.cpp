@@ -149,22 +149,22 @@ class PlaneShadow {
   ViewSides view_;
 };
 
-// Shadow entries gathered per (tile, light) key, in counts-then-fill order (as the primary
+// Shadow entries gathered per (cell, light) key, in counts-then-fill order (as the primary
 // lists): those from the planes' shadows.
 struct KeyedEntries {
   std::vector<uint32_t> first, entries;
 };
 
-// tooMany[l]: light l's lists would hold more than TILE_FILL_LIMIT entries a tile on average
+// tooMany[l]: light l's lists would hold more than TILE_FILL_LIMIT entries a cell on average
 // (spheres above it cast unbounded shadows, say), and its entries are left out.
 KeyedEntries planeShadowEntries(const gpu::Frame& f, const std::vector<gpu::Sphere>& spheres,
                                 const std::vector<gpu::Plane>& planes, const std::vector<gpu::Light>& lights,
-                                const TileLists& lists, std::vector<bool>& tooMany) {
-  const size_t tiles = size_t(lists.columns) * lists.rows, keys = tiles * lights.size();
+                                const TileLists& lists, std::vector<char>& tooMany) {
+  const size_t cells = size_t(lists.shadowColumns) * lists.shadowRows, keys = cells * lights.size();
   const PlaneShadow shadow(f, lists.columns, lists.rows);
   struct Rect {
     uint32_t sphere, light;
-    TileRect tiles;
+    TileRect tiles;  // in cells
   };
   std::vector<Rect> rects;
   std::vector<uint64_t> total(lights.size(), 0);
@@ -172,16 +172,18 @@ KeyedEntries planeShadowEntries(const gpu::Frame& f, const std::vector<gpu::Sphe
     for (const gpu::Plane& p : planes)
       for (uint32_t l = 0; l < lights.size(); ++l) {
         const TileRect t = shadow.tiles(spheres[i], p, glm::dvec3(lights[l].position));
-        if (!t.empty()) rects.push_back({i, l, t}), total[l] += t.area();
+        const TileRect c{t.x0 / SHADOW_CELL, t.y0 / SHADOW_CELL, t.x1 / SHADOW_CELL, t.y1 / SHADOW_CELL};
+        if (!t.empty()) rects.push_back({i, l, c}), total[l] += c.area();
       }
   tooMany.resize(lights.size());
-  for (size_t l = 0; l < lights.size(); ++l) tooMany[l] = total[l] > uint64_t(TILE_FILL_LIMIT) * tiles;
+  for (size_t l = 0; l < lights.size(); ++l) tooMany[l] = total[l] > uint64_t(TILE_FILL_LIMIT) * cells;
   rects.erase(std::remove_if(rects.begin(), rects.end(), [&](const Rect& r) { return tooMany[r.light]; }), rects.end());
   KeyedEntries out;
   out.first.assign(keys + 1, 0);
   auto each = [&](const Rect& r, auto&& visit) {
     for (uint32_t y = r.tiles.y0; y <= r.tiles.y1; ++y)
-      for (uint32_t x = r.tiles.x0; x <= r.tiles.x1; ++x) visit((size_t(y) * lists.columns + x) * lights.size() + r.light);
+      for (uint32_t x = r.tiles.x0; x <= r.tiles.x1; ++x)
+        visit((size_t(y) * lists.shadowColumns + x) * lights.size() + r.light);
   };
   for (const Rect& r : rects) each(r, [&](size_t key) { ++out.first[key + 1]; });
   for (size_t k = 0; k < keys; ++k) out.first[k + 1] += out.first[k];
@@ -192,7 +194,7 @@ KeyedEntries planeShadowEntries(const gpu::Frame& f, const std::vector<gpu::Sphe
 }
 
 // Per sphere and light, the spheres that meet the cone from the light around it (found when a
-// tile first needs them); TILE_USE_TREE where the light is within the sphere.
+// cell first needs them); TILE_USE_TREE where the light is within the sphere.
 class Casters {
  public:
   Casters(const std::vector<gpu::Sphere>& spheres, const std::vector<gpu::Light>& lights,
@@ -200,7 +202,7 @@ class Casters {
       : spheres_(spheres), lights_(lights), nodes_(nodes), first_(spheres.size() * lights.size(), kUnknown),
         count_(first_.size(), 0) {}
 
-  // Calls visit(b) for each caster b of sphere a for light l; false where the tile must walk
+  // Calls visit(b) for each caster b of sphere a for light l; false where the cell must walk
   // the tree.
   template <typename Visit>
   bool each(uint32_t a, uint32_t l, Visit&& visit) {
@@ -243,31 +245,35 @@ bool shadowListsFit(size_t lights, size_t planes) {
 void appendShadowLists(const gpu::Frame& f, const std::vector<gpu::Sphere>& spheres,
                        const std::vector<gpu::Plane>& planes, const std::vector<gpu::Light>& lights,
                        const std::vector<gpu::BvhNode>& nodes, TileLists& lists) {
-  const size_t tiles = size_t(lists.columns) * lists.rows;
+  lists.shadowColumns = (lists.columns + SHADOW_CELL - 1) / SHADOW_CELL;
+  lists.shadowRows = (lists.rows + SHADOW_CELL - 1) / SHADOW_CELL;
+  const size_t cells = size_t(lists.shadowColumns) * lists.shadowRows;
   lists.shadowRanges = uint32_t(lists.ranges.size());
-  lists.ranges.resize(lists.ranges.size() + 2 * tiles * lights.size(), 0);
+  lists.ranges.resize(lists.ranges.size() + 2 * cells * lights.size(), 0);
   uint32_t* ranges = lists.ranges.data() + lists.shadowRanges;
-  std::vector<bool> tooMany;
+  std::vector<char> tooMany;
   const KeyedEntries fromPlanes = planeShadowEntries(f, spheres, planes, lights, lists, tooMany);
   Casters casters(spheres, lights, nodes);
   std::vector<uint32_t> seen(spheres.size(), ~0u);  // the key a sphere was last listed for
   std::vector<uint32_t>& out = lists.spheres;
-  out.reserve(out.size() + fromPlanes.entries.size() + tiles);
-  for (size_t t = 0; t < tiles; ++t) {
-    const uint32_t first = lists.ranges[2 * t], count = lists.ranges[2 * t + 1];
+  out.reserve(out.size() + fromPlanes.entries.size() + cells);
+  for (uint32_t cell = 0; cell < cells; ++cell) {
+    const uint32_t cx = cell % lists.shadowColumns * SHADOW_CELL, cy = cell / lists.shadowColumns * SHADOW_CELL;
     for (uint32_t l = 0; l < lights.size(); ++l) {
-      const uint32_t key = uint32_t(t * lights.size() + l), start = uint32_t(out.size());
+      const uint32_t key = uint32_t(cell * lights.size() + l), start = uint32_t(out.size());
       ranges[2 * key] = start;
-      if (tooMany[l] || count == TILE_USE_TREE) {
-        ranges[2 * key + 1] = TILE_USE_TREE;
-        continue;
-      }
       auto add = [&](uint32_t i) {
         if (seen[i] != key) seen[i] = key, out.push_back(i);
       };
       for (uint32_t k = fromPlanes.first[key]; k < fromPlanes.first[key + 1]; ++k) add(fromPlanes.entries[k]);
-      bool listed = true;
-      for (uint32_t i = first; listed && i < first + count; ++i) listed = casters.each(out[i], l, add);
+      bool listed = !tooMany[l];
+      for (uint32_t y = cy; listed && y < std::min(cy + SHADOW_CELL, lists.rows); ++y)
+        for (uint32_t x = cx; listed && x < std::min(cx + SHADOW_CELL, lists.columns); ++x) {
+          const uint32_t* tile = &lists.ranges[2 * (size_t(y) * lists.columns + x)];
+          const uint32_t first = tile[0], count = tile[1];
+          listed = count != TILE_USE_TREE;
+          for (uint32_t i = first; listed && i < first + count; ++i) listed = casters.each(out[i], l, add);
+        }
       listed &= out.size() - start <= TILE_LIST_MAX;
       ranges[2 * key + 1] = listed ? uint32_t(out.size()) - start : TILE_USE_TREE;
       if (!listed) out.resize(start);

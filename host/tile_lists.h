@@ -17,11 +17,13 @@ struct TileLists {
   uint32_t columns = 0, rows = 0;
   // Per tile, row-major: its first entry of `spheres` and its count (two words), or the count
   // TILE_USE_TREE: more than TILE_LIST_MAX spheres, its rays walk the tree. Where the scene has
-  // shadow lists (shadow_lists.h), their ranges follow from word shadowRanges on, per tile and
-  // light, and their entries follow the primary ones in `spheres`.
+  // shadow lists (shadow_lists.h), their ranges follow from word shadowRanges on, per cell of
+  // SHADOW_CELL x SHADOW_CELL tiles (shadowColumns a row) and light, and their entries follow
+  // the primary ones in `spheres`.
   std::vector<uint32_t> ranges;
   std::vector<uint32_t> spheres;  // indices into the packed spheres, each once in a list
   uint32_t shadowRanges = 0;      // the first word of the shadow lists' ranges (0: none)
+  uint32_t shadowColumns = 0, shadowRows = 0;
 };
 
 struct TileRect {

@@ -47,7 +47,7 @@ using uvec4 = glm::uvec4;
 #define BINDING_SPHERE_STORAGE 12  // storage Sphere[] (SPHERE_TREE_STORAGE)
 #define BINDING_STATUS 13          // storage uint[STATUS_WORDS]: what the kernel reports to the host
 // Per-tile sphere lists (SPEC_TILE_LISTS, host/tile_lists.h): per tile its first entry and count,
-// and the entries (indices of spheres); then, with SPEC_SHADOW_LISTS, per tile and light.
+// and the entries (indices of spheres); then, with SPEC_SHADOW_LISTS, per cell of tiles and light.
 // 16-byte placeholders without them.
 #define BINDING_TILE_RANGES 14   // storage uint[2 * tiles]
 #define BINDING_TILE_SPHERES 15  // storage uint[]
@@ -93,12 +93,15 @@ using uvec4 = glm::uvec4;
 #define TILE_LIST_MAX 32u
 #define TILE_USE_TREE 0xFFFFFFFFu
 #define TILE_FILL_LIMIT 64u
-// Shadow rays of such a scene test the spheres listed for their tile and light
+// Shadow rays of such a scene test the spheres listed for their cell of tiles and light
 // (SPEC_SHADOW_LISTS, host/shadow_lists.h), in the same buffers after the primary lists, where
 // the scene has at most SHADOW_LIST_MAX_LIGHTS lights and SHADOW_LIST_MAX_PLANES planes (the
 // host projects every sphere's shadow onto every plane for every light).
+// A shadow list is shared by a cell of SHADOW_CELL x SHADOW_CELL tiles (fewer lists to build on
+// each camera move).
 #define SHADOW_LIST_MAX_LIGHTS 4u
 #define SHADOW_LIST_MAX_PLANES 8u
+#define SHADOW_CELL 2u
 // Scenes with more spheres than the loop is specialised to (MAX_SPECIALISED_COUNT) walk the tree
 // (measured: docs/performance.md, "The sphere tree"); fewer keep the loop, unrolled.
 #define SPHERE_TREE_MIN_SPHERES 9
@@ -234,7 +237,7 @@ struct Frame {
   uint treeNodeCount;  // nodes of the sphere tree (SPEC_SPHERE_TREE)
   uint tileColumns;    // tiles per row of the image (SPEC_TILE_LISTS)
   uint shadowRanges;   // first word of the shadow lists' ranges in BINDING_TILE_RANGES (SPEC_SHADOW_LISTS)
-  uint pad0;
+  uint shadowColumns;  // shadow cells per row of the image
   uint pad1;
   uint pad2;
 };

@@ -64,7 +64,8 @@ layout(std140, binding = BINDING_TILE_ORDER) uniform TileOrderBlock { uvec4 tile
 // instructions per pixel by bench/instructions.sh: 374, 340 with the frame copied, 325 also
 // without main's early return, 286 also with the objects and lights copied).
 Frame frame;
-uint primaryTile;  // the pixel's tile (TILE_LISTS, SHADOW_LISTS), set in main
+uint primaryTile;  // the pixel's tile (TILE_LISTS), set in main
+uint shadowCell;   // the pixel's cell of shadow lists (SHADOW_LISTS), set in main
 const uint SPHERE_CACHE = SPHERE_COUNT == COUNT_FROM_FRAME || SPHERE_COUNT == 0u ? 1u : SPHERE_COUNT;
 const uint PLANE_CACHE = PLANE_COUNT == COUNT_FROM_FRAME || PLANE_COUNT == 0u ? 1u : PLANE_COUNT;
 const uint LIGHT_CACHE = LIGHT_COUNT == COUNT_FROM_FRAME || LIGHT_COUNT == 0u ? 1u : LIGHT_COUNT;
@@ -246,6 +247,7 @@ void main() {
   uvec2 pixel = min(id + uvec2(0u, frame.rowOffset), uvec2(frame.width, frame.height) - 1u);
   uint outputIndex = (pixel.y - frame.rowOffset) * frame.width + pixel.x;
   primaryTile = (pixel.y / TILE_SIZE) * frame.tileColumns + pixel.x / TILE_SIZE;
+  shadowCell = (pixel.y / (TILE_SIZE * SHADOW_CELL)) * frame.shadowColumns + pixel.x / (TILE_SIZE * SHADOW_CELL);
   vec3 origin = frame.eye.xyz;
 #ifdef RAYTEX_DEBUG_OUTPUT
   vec4 result = debugOutput(origin, vec2(pixel) + 0.5);

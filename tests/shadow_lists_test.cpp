@@ -1,5 +1,5 @@
 // The per-tile shadow lists (host/shadow_lists.cpp) are conservative: every sphere that blocks a
-// pixel's shadow ray in float64 is listed for its tile and light (the device tests in
+// pixel's shadow ray in float64 is listed for its cell and light (the device tests in
 // sphere_tree_test.cpp render them against the tree's shadow walk).
 #include "sphere_field.h"
 #include "gpu_scene.h"
@@ -14,9 +14,9 @@
 
 namespace {
 
-// Whether sphere i is in the shadow list of (tile, light), or the tile walks the tree.
-bool listed(const TileLists& lists, uint32_t lights, uint32_t tile, uint32_t light, uint32_t i) {
-  const uint32_t* range = &lists.ranges[lists.shadowRanges + 2 * (size_t(tile) * lights + light)];
+// Whether sphere i is in the shadow list of (cell, light), or the cell walks the tree.
+bool listed(const TileLists& lists, uint32_t lights, uint32_t cell, uint32_t light, uint32_t i) {
+  const uint32_t* range = &lists.ranges[lists.shadowRanges + 2 * (size_t(cell) * lights + light)];
   if (range[1] == TILE_USE_TREE) return true;
   const auto first = lists.spheres.begin() + range[0], last = first + range[1];
   return std::find(first, last, i) != last;
@@ -46,10 +46,12 @@ TEST(ShadowLists, EveryBlockingSphereIsListedForItsTileAndLight) {
     ASSERT_TRUE(g.shape.shadowLists);
     const TileLists& lists = g.tiles;
     const uint32_t lights = uint32_t(g.lights.size());
-    ASSERT_EQ(lists.ranges.size(), lists.shadowRanges + 2 * size_t(lists.columns) * lists.rows * lights);
+    const uint32_t cells = lists.shadowColumns * lists.shadowRows;
+    ASSERT_EQ(lists.shadowColumns, (lists.columns + SHADOW_CELL - 1) / SHADOW_CELL);
+    ASSERT_EQ(lists.ranges.size(), lists.shadowRanges + 2 * size_t(cells) * lights);
     int blocked = 0, missing = 0, walks = 0;
-    for (uint32_t t = 0; t < lists.columns * lists.rows; ++t)  // for the course's light
-      walks += lists.ranges[lists.shadowRanges + 2 * t * lights + 1] == TILE_USE_TREE;
+    for (uint32_t c = 0; c < cells; ++c)  // for the course's light
+      walks += lists.ranges[lists.shadowRanges + 2 * c * lights + 1] == TILE_USE_TREE;
     for (uint32_t y = 0; y < h; ++y)
       for (uint32_t x = 0; x < w; ++x) {
         // A point anywhere in the pixel (the samples of --spp), camera-relative.
@@ -64,7 +66,7 @@ TEST(ShadowLists, EveryBlockingSphereIsListedForItsTileAndLight) {
         }
         if (!std::isfinite(t)) continue;
         const glm::dvec3 point = t * d;
-        const uint32_t tile = (y / TILE_SIZE) * lists.columns + x / TILE_SIZE;
+        const uint32_t cell = (y / (TILE_SIZE * SHADOW_CELL)) * lists.shadowColumns + x / (TILE_SIZE * SHADOW_CELL);
         for (uint32_t l = 0; l < lights; ++l) {
           const glm::dvec3 toLight = glm::dvec3(g.lights[l].position) - point;
           const double distance = glm::length(toLight);
@@ -74,13 +76,13 @@ TEST(ShadowLists, EveryBlockingSphereIsListedForItsTileAndLight) {
             const glm::dvec3 dir = toLight / distance;
             if (!(sphereDistance(point + 1e-6 * distance * dir, dir, g.spheres[i]) < distance)) continue;
             ++blocked;
-            missing += !listed(lists, lights, tile, l, i);
+            missing += !listed(lists, lights, cell, l, i);
           }
         }
       }
     EXPECT_EQ(missing, 0);
     EXPECT_GT(blocked, int(w * h / 20));
-    EXPECT_LT(walks, int(lists.columns * lists.rows / 4));  // most tiles have lists
+    EXPECT_LT(walks, int(cells / 4));  // most cells have lists
   }
 }
 
