@@ -9,6 +9,10 @@
 #include <cstdint>
 #include <vector>
 
+// A laid-out node's spheres (BvhNode.spheres): its count (0 for an inner node) and its first.
+inline uint32_t treeLeafCount(const gpu::BvhNode& n) { return n.spheres >> TREE_LEAF_SHIFT; }
+inline uint32_t treeLeafFirst(const gpu::BvhNode& n) { return n.spheres & ((1u << TREE_LEAF_SHIFT) - 1u); }
+
 // Which tree, if any, a scene of `spheres` spheres walks (SPHERE_TREE_*).
 uint32_t sphereTreeFor(size_t spheres);
 

@@ -24,7 +24,7 @@ struct SceneShape {
   uint32_t imageCount = MAX_IMAGES;  // image files the objects use (SPEC_IMAGE_COUNT)
   uint32_t sphereTree = SPHERE_TREE_NONE;  // SPEC_SPHERE_TREE: how the spheres are walked
   uint32_t tileLists = 0;  // SPEC_TILE_LISTS (a VkBool32): primary rays test their tile's spheres
-  uint32_t shadowLists = 0;  // SPEC_SHADOW_LISTS (a VkBool32): shadow rays test their tile's and light's
+  uint32_t shadowLists = 0;  // SPEC_SHADOW_LISTS (a VkBool32): shadow rays test their cell's and light's
   uint32_t kinds() const { return sphereKinds | planeKinds; }
   bool operator==(const SceneShape& o) const {
     return sphereKinds == o.sphereKinds && planeKinds == o.planeKinds && sphereCount == o.sphereCount &&

@@ -1,5 +1,7 @@
 #include "shadow_lists.h"
 
+#include "gpu_tree.h"
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -57,7 +59,7 @@ void spheresInCone(const Cone& cone, const std::vector<gpu::Sphere>& spheres, co
   for (uint32_t i = 0; i < nodes.size();) {
     const gpu::BvhNode& n = nodes[i];
     const bool meets = mayMeetCone(cone, n);
-    const uint32_t count = n.spheres >> TREE_LEAF_SHIFT, first = n.spheres & ((1u << TREE_LEAF_SHIFT) - 1u);
+    const uint32_t count = treeLeafCount(n), first = treeLeafFirst(n);
     for (uint32_t k = first; meets && k < first + count; ++k) {
       const gpu::Sphere& s = spheres[k];
       if (meetsCone(cone, glm::dvec3(s.centerRadius), paddedRadius(s, cone.apex))) out.push_back(k);
@@ -81,10 +83,10 @@ class PlaneShadow {
     const double r = paddedRadius(b, light), lightHeight = glm::dot(n, light) - plane.normalDistance.w;
     const TileRect all{0, 0, columns_ - 1, rows_ - 1};
     if (!(lightHeight != 0.0)) return all;
-    glm::dvec3 points[8];
+    glm::dvec3 corners[8], points[8];
+    boundingCubeCorners(c, r, corners);
     int beyond = 0, above = 0, count = 0;
-    for (int k = 0; k < 8; ++k) {
-      const glm::dvec3 q = c + r * glm::dvec3(k & 1 ? 1 : -1, k & 2 ? 1 : -1, k & 4 ? 1 : -1);
+    for (const glm::dvec3& q : corners) {
       const double height = glm::dot(n, q) - plane.normalDistance.w;
       const double s = lightHeight / (lightHeight - height);  // the plane at light + s (q - light)
       beyond += height * lightHeight < 0.0;

@@ -12,6 +12,10 @@ ViewSides viewSides(const gpu::Frame& f) {
   return {{px * forward - r, px * forward + r, py * forward - u, py * forward + u}};
 }
 
+void boundingCubeCorners(const glm::dvec3& c, double r, glm::dvec3 (&corners)[8]) {
+  for (int k = 0; k < 8; ++k) corners[k] = c + r * glm::dvec3(k & 1 ? 1 : -1, k & 2 ? 1 : -1, k & 4 ? 1 : -1);
+}
+
 TileRect tilesOfPoints(const gpu::Frame& f, const glm::dvec3* points, size_t count, uint32_t columns, uint32_t rows) {
   const glm::dvec3 forward(f.cameraForward), right(f.cameraRight), up(f.cameraUp);
   const TileRect all{0, 0, columns - 1, rows - 1};
@@ -42,7 +46,7 @@ TileRect tilesOf(const gpu::Frame& f, const ViewSides& view, const gpu::Sphere& 
   for (const glm::dvec3& side : view.inward)
     if (glm::dot(side, c) < -r * glm::length(side)) return {};
   glm::dvec3 corners[8];
-  for (int k = 0; k < 8; ++k) corners[k] = c + r * glm::dvec3(k & 1 ? 1 : -1, k & 2 ? 1 : -1, k & 4 ? 1 : -1);
+  boundingCubeCorners(c, r, corners);
   return tilesOfPoints(f, corners, 8, columns, rows);
 }
 

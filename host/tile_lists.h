@@ -39,6 +39,9 @@ struct ViewSides {
 };
 ViewSides viewSides(const gpu::Frame& frame);
 
+// The eight corners of the cube of half side r around c (a sphere's bounding cube).
+void boundingCubeCorners(const glm::dvec3& c, double r, glm::dvec3 (&corners)[8]);
+
 // The tiles that the film positions of camera-relative `points` touch, their bounds grown by a
 // pixel; every tile if a point is not in front of the camera, none if all lie off screen.
 TileRect tilesOfPoints(const gpu::Frame& frame, const glm::dvec3* points, size_t count, uint32_t columns, uint32_t rows);

@@ -93,12 +93,11 @@ using uvec4 = glm::uvec4;
 #define TILE_LIST_MAX 32u
 #define TILE_USE_TREE 0xFFFFFFFFu
 #define TILE_FILL_LIMIT 64u
-// Shadow rays of such a scene test the spheres listed for their cell of tiles and light
+// Shadow rays of such a scene test the spheres listed for their cell of SHADOW_CELL x
+// SHADOW_CELL tiles (fewer lists to build on each camera move than one a tile) and light
 // (SPEC_SHADOW_LISTS, host/shadow_lists.h), in the same buffers after the primary lists, where
 // the scene has at most SHADOW_LIST_MAX_LIGHTS lights and SHADOW_LIST_MAX_PLANES planes (the
 // host projects every sphere's shadow onto every plane for every light).
-// A shadow list is shared by a cell of SHADOW_CELL x SHADOW_CELL tiles (fewer lists to build on
-// each camera move).
 #define SHADOW_LIST_MAX_LIGHTS 4u
 #define SHADOW_LIST_MAX_PLANES 8u
 #define SHADOW_CELL 2u
@@ -148,7 +147,7 @@ using uvec4 = glm::uvec4;
 #define SPEC_LOOP_BUDGET 13  // loop passes a SIMD group may make (0: not counted)
 #define SPEC_TILE_LISTS 14   // 1: primary rays test their tile's spheres (BINDING_TILE_*)
 #define SPEC_TILE_ORDER 15   // 1: workgroups render the tiles of BINDING_TILE_ORDER (tile kernels)
-#define SPEC_SHADOW_LISTS 16 // 1: shadow rays test their tile's and light's spheres (BINDING_TILE_*)
+#define SPEC_SHADOW_LISTS 16 // 1: shadow rays test their cell's and light's spheres (BINDING_TILE_*)
 
 // Scenes with at most this many spheres, planes or lights get kernels with the count
 // built in (the loops over them unrolled); larger ones loop to Frame's count. On lavapipe a

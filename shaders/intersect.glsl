@@ -69,7 +69,7 @@ Hit closestHit(vec3 o, vec3 d) {
 }
 
 // True if anything lies on the segment from o along unit d before distance tMax, a shadow ray
-// to light `light` (its tile's list of spheres: SHADOW_LISTS). `passes`: the
+// to light `light` (its cell's list of spheres: SHADOW_LISTS). `passes`: the
 // loops' passes for the caller to count (loop_budget.glsl) where the lanes meet again: a lane
 // that returns early passed no later loop, so the busiest lane's sum is the group's.
 bool occluded(vec3 o, vec3 d, float tMax, uint light, out uint passes) {

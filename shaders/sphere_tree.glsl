@@ -94,8 +94,8 @@ void closestSphereInTile(vec3 o, vec3 d, inout Hit hit) {
 
 // True if a sphere listed for the ray's cell of tiles and light (host/shadow_lists.h: every
 // sphere that can lie between the light and a point the cell sees; the lanes of a workgroup
-// share the list) lies on the segment from o along unit d before distance tMax, or one of the tree's
-// where the list is long.
+// share the list) lies on the segment from o along unit d before distance tMax, or one of the
+// tree's where the list is long.
 bool occludedInTile(vec3 o, vec3 d, float tMax, uint light) {
   uint range = frame.shadowRanges + 2u * (shadowCell * lightCount() + light);
   uint first = tileRanges[range], count = tileRanges[range + 1u];

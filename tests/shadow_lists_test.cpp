@@ -1,9 +1,8 @@
-// The per-tile shadow lists (host/shadow_lists.cpp) are conservative: every sphere that blocks a
+// The shadow lists (host/shadow_lists.cpp) are conservative: every sphere that blocks a
 // pixel's shadow ray in float64 is listed for its cell and light (the device tests in
 // sphere_tree_test.cpp render them against the tree's shadow walk).
 #include "sphere_field.h"
 #include "gpu_scene.h"
-#include "reference.h"
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
@@ -33,7 +32,7 @@ double sphereDistance(glm::dvec3 o, glm::dvec3 d, const gpu::Sphere& s) {
 
 }  // namespace
 
-TEST(ShadowLists, EveryBlockingSphereIsListedForItsTileAndLight) {
+TEST(ShadowLists, EveryBlockingSphereIsListedForItsCellAndLight) {
   const uint32_t w = 240, h = 136;
   std::mt19937 rng{7};
   std::uniform_real_distribution<double> unit(0.0, 1.0);
@@ -85,4 +84,3 @@ TEST(ShadowLists, EveryBlockingSphereIsListedForItsTileAndLight) {
     EXPECT_LT(walks, int(cells / 4));  // most cells have lists
   }
 }
-

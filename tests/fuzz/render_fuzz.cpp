@@ -6,7 +6,7 @@
 // each created once, so an input costs dispatches and no compilation: the loop over every sphere
 // (where the spheres fit the uniform block) and the sphere tree's kernel, which every scene with a
 // sphere also renders through (a tree over a few spheres is as valid as over many): primary rays
-// through the tile's list, shadow rays through the tile's and light's lists where the scene has
+// through the tile's list, shadow rays through the cell's and light's lists where the scene has
 // them (shadow_lists.h), the tree where a list is long. Scenes that
 // buildGpuScene refuses (over the kernel's limits, an image that does not load) and renders over
 // lavapipe's loop budget are skipped. Built by RAYTEX_FUZZ_RENDER=ON with clang;
