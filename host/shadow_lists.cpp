@@ -276,7 +276,7 @@ void appendShadowLists(const gpu::Frame& f, const std::vector<gpu::Sphere>& sphe
           listed = count != TILE_USE_TREE;
           for (uint32_t i = first; listed && i < first + count; ++i) listed = casters.each(out[i], l, add);
         }
-      listed &= out.size() - start <= TILE_LIST_MAX;
+      listed &= out.size() - start <= SHADOW_LIST_MAX;
       ranges[2 * key + 1] = listed ? uint32_t(out.size()) - start : TILE_USE_TREE;
       if (!listed) out.resize(start);
     }

@@ -52,6 +52,17 @@ TileRect tilesOf(const gpu::Frame& f, const ViewSides& view, const gpu::Sphere& 
 
 }  // namespace
 
+std::vector<uint32_t> nearestFirst(const std::vector<gpu::Sphere>& spheres) {
+  std::vector<double> nearest(spheres.size());
+  std::vector<uint32_t> order(spheres.size());
+  for (uint32_t i = 0; i < spheres.size(); ++i) {
+    nearest[i] = glm::length(glm::dvec3(spheres[i].centerRadius)) - double(spheres[i].centerRadius.w);
+    order[i] = i;
+  }
+  std::stable_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) { return nearest[a] < nearest[b]; });
+  return order;
+}
+
 TileLists buildTileLists(const gpu::Frame& f, const std::vector<gpu::Sphere>& spheres) {
   TileLists lists;
   lists.columns = (f.width + TILE_SIZE - 1) / TILE_SIZE;
@@ -81,7 +92,7 @@ TileLists buildTileLists(const gpu::Frame& f, const std::vector<gpu::Sphere>& sp
     next += tree ? 0u : counts[t];
   }
   lists.spheres.resize(next);
-  for (uint32_t i = 0; fill && i < rects.size(); ++i) {
+  for (uint32_t i : fill ? nearestFirst(spheres) : std::vector<uint32_t>{}) {
     const TileRect& t = rects[i];
     for (uint32_t y = t.y0; y <= t.y1 && t.x0 <= t.x1; ++y)
       for (uint32_t x = t.x0; x <= t.x1; ++x) {

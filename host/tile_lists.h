@@ -46,8 +46,12 @@ void boundingCubeCorners(const glm::dvec3& c, double r, glm::dvec3 (&corners)[8]
 // pixel; every tile if a point is not in front of the camera, none if all lie off screen.
 TileRect tilesOfPoints(const gpu::Frame& frame, const glm::dvec3* points, size_t count, uint32_t columns, uint32_t rows);
 
+// The indices of `spheres` (camera-relative) by the distance of their nearest point from the
+// camera, ascending; equal distances keep the scene's order, as the loop over every sphere does.
+std::vector<uint32_t> nearestFirst(const std::vector<gpu::Sphere>& spheres);
+
 // The lists for `spheres` (camera-relative, as packed) seen through `frame` (its camera axes,
-// width and height). A sphere that reaches the camera plane is in every tile. Where the lists
+// width and height), each nearest first (nearestFirst). A sphere that reaches the camera plane is in every tile. Where the lists
 // would be long to build (the spheres' screen bounds cover more than TILE_FILL_LIMIT entries a
 // tile in all), every tile walks the tree: the host's work stays within O(spheres + tiles).
 TileLists buildTileLists(const gpu::Frame& frame, const std::vector<gpu::Sphere>& spheres);

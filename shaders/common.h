@@ -86,11 +86,12 @@ using uvec4 = glm::uvec4;
 #define TREE_LEAF_SIZE 1u            // spheres in a leaf, at most
 #define TREE_LEAF_SHIFT 24u          // BvhNode.spheres: count << TREE_LEAF_SHIFT | first
 // Primary rays of a scene with a tree test the spheres listed for their tile of
-// TILE_SIZE x TILE_SIZE pixels (one workgroup); a tile with more than TILE_LIST_MAX walks the
-// tree (its count is TILE_USE_TREE). The host builds lists of at most TILE_FILL_LIMIT entries a
+// TILE_SIZE x TILE_SIZE pixels (one workgroup), nearest first: a ray stops at the first sphere
+// whose nearest point lies beyond its hit. A tile with more than TILE_LIST_MAX walks the tree
+// (its count is TILE_USE_TREE). The host builds lists of at most TILE_FILL_LIMIT entries a
 // tile on average; over that every tile walks the tree.
 #define TILE_SIZE 8u
-#define TILE_LIST_MAX 32u
+#define TILE_LIST_MAX 128u
 #define TILE_USE_TREE 0xFFFFFFFFu
 #define TILE_FILL_LIMIT 64u
 // Shadow rays of such a scene test the spheres listed for their cell of SHADOW_CELL x
@@ -101,6 +102,7 @@ using uvec4 = glm::uvec4;
 #define SHADOW_LIST_MAX_LIGHTS 4u
 #define SHADOW_LIST_MAX_PLANES 8u
 #define SHADOW_CELL 2u
+#define SHADOW_LIST_MAX 32u  // spheres in a cell's list for a light; over that its rays walk the tree
 // Scenes with more spheres than the loop is specialised to (MAX_SPECIALISED_COUNT) walk the tree
 // (measured: docs/performance.md, "The sphere tree"); fewer keep the loop, unrolled.
 #define SPHERE_TREE_MIN_SPHERES 9

@@ -75,7 +75,10 @@ bool occludedInTree(vec3 o, vec3 d, float tMax) {
 
 // The closest sphere hit of a primary ray nearer than hit.t, into hit: the spheres listed for
 // its tile (host/tile_lists.h; the lanes of a workgroup share one tile, so the list's loads and
-// its loop are the same for all of them), or the tree's where the tile's list is long.
+// its loop are the same for all of them), or the tree's where the tile's list is long. The list
+// runs nearest first, so a ray stops at a sphere whose nearest point lies beyond its hit (the
+// floor's, or a sphere's): no later one can be nearer. The margin of 2^-10 is far beyond the
+// float rounding of the distance and of the sphere test.
 void closestSphereInTile(vec3 o, vec3 d, inout Hit hit) {
   uint first = tileRanges[2u * primaryTile], count = tileRanges[2u * primaryTile + 1u];
   if (count == TILE_USE_TREE) {
@@ -86,7 +89,9 @@ void closestSphereInTile(vec3 o, vec3 d, inout Hit hit) {
   for (uint k = 0u; k < count; ++k) {
     ++passes;
     uint i = tileSpheres[first + k];
-    float t = intersectSphere(o, d, sphereAt(i).centerRadius, 0.0, hit.t);
+    vec4 centerRadius = sphereAt(i).centerRadius;
+    if (length(centerRadius.xyz - o) - centerRadius.w > hit.t * (1.0 + 1.0 / 1024.0)) break;
+    float t = intersectSphere(o, d, centerRadius, 0.0, hit.t);
     if (t > 0.0) hit = Hit(t, HIT_SPHERE, i);
   }
   countLoop(passes);

@@ -184,7 +184,8 @@ TEST(GpuTree, FewSpheresKeepTheLoopAndManyGoToStorage) {
 }
 
 // The per-tile lists (tile_lists.h) are conservative: every sphere a pixel's ray hits is listed
-// for its tile, and a sphere that reaches the camera plane is in every tile.
+// for its tile, and a sphere that reaches the camera plane is in every tile. Each list runs
+// nearest first.
 TEST(TileLists, EveryHitSphereIsListedForItsPixelsTile) {
   Scene scene = randomSpheres(400, 30.0, 9);
   scene.camera.eye = {0.0, 0.0, 40.0};
@@ -204,10 +205,14 @@ TEST(TileLists, EveryHitSphereIsListedForItsPixelsTile) {
     return std::find(lists.spheres.begin() + first, lists.spheres.begin() + first + count, sphere) !=
            lists.spheres.begin() + first + count;
   };
+  auto nearest = [&](uint32_t i) { return glm::length(glm::dvec3(packed[i].centerRadius)) - packed[i].centerRadius.w; };
   int hits = 0, walks = 0;
   for (uint32_t t = 0; t < lists.columns * lists.rows; ++t) {
-    walks += lists.ranges[2 * t + 1] == TILE_USE_TREE;
+    const uint32_t first = lists.ranges[2 * t], count = lists.ranges[2 * t + 1];
+    walks += count == TILE_USE_TREE;
     EXPECT_TRUE(listed(t, 5)) << "tile " << t;
+    for (uint32_t k = 1; count != TILE_USE_TREE && k < count; ++k)  // nearest first
+      EXPECT_LE(nearest(lists.spheres[first + k - 1]), nearest(lists.spheres[first + k])) << "tile " << t;
   }
   scene.spheres.erase(scene.spheres.begin() + 5);  // the rays from inside it hit it first
   for (uint32_t y = 0; y < h; ++y)

@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <string>
@@ -112,6 +113,24 @@ TEST_F(SphereTreeTest, EmptyTileListsChangeTheImage) {
   for (size_t i = 3; i < wrong.size(); i += 4) spheres += wrong[i] == float(HIT_SPHERE);
   EXPECT_NE(right, wrong);
   EXPECT_EQ(spheres, 0u);
+}
+
+// And so can their order: a ray stops at the first listed sphere whose nearest point lies beyond
+// its hit, so lists reversed (farthest first) lose spheres that lie nearer.
+TEST_F(SphereTreeTest, FarthestFirstTileListsChangeTheImage) {
+  const Scene scene = field(150, "(0, 1, 4)");
+  GpuScene g = buildGpuScene(scene, 96, 64);
+  ASSERT_TRUE(g.shape.tileLists);
+  const std::vector<float> right = renderPacked(g, OUTPUT_COORDS, FILTER_POINT);
+  size_t reversed = 0;
+  for (size_t t = 0; t < size_t(g.tiles.columns) * g.tiles.rows; ++t) {
+    const uint32_t first = g.tiles.ranges[2 * t], count = g.tiles.ranges[2 * t + 1];
+    if (count == TILE_USE_TREE || count < 2) continue;
+    std::reverse(g.tiles.spheres.begin() + first, g.tiles.spheres.begin() + first + count);
+    ++reversed;
+  }
+  ASSERT_GT(reversed, 0u);
+  EXPECT_GT(differing(right, renderPacked(g, OUTPUT_COORDS, FILTER_POINT)), 100u);
 }
 
 // Shadow rays through the per-tile lists (shadow_lists.h) find what the tree's walk finds: the
