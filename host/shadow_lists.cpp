@@ -268,15 +268,16 @@ void appendShadowLists(const gpu::Frame& f, const std::vector<gpu::Sphere>& sphe
         if (seen[i] != key) seen[i] = key, out.push_back(i);
       };
       for (uint32_t k = fromPlanes.first[key]; k < fromPlanes.first[key + 1]; ++k) add(fromPlanes.entries[k]);
-      bool listed = !tooMany[l];
+      // A list stops growing once it is over SHADOW_LIST_MAX: the cell walks the tree anyway.
+      auto fits = [&] { return out.size() - start <= SHADOW_LIST_MAX; };
+      bool listed = !tooMany[l] && fits();
       for (uint32_t y = cy; listed && y < std::min(cy + SHADOW_CELL, lists.rows); ++y)
         for (uint32_t x = cx; listed && x < std::min(cx + SHADOW_CELL, lists.columns); ++x) {
           const uint32_t* tile = &lists.ranges[2 * (size_t(y) * lists.columns + x)];
           const uint32_t first = tile[0], count = tile[1];
           listed = count != TILE_USE_TREE;
-          for (uint32_t i = first; listed && i < first + count; ++i) listed = casters.each(out[i], l, add);
+          for (uint32_t i = first; listed && i < first + count; ++i) listed = casters.each(out[i], l, add) && fits();
         }
-      listed &= out.size() - start <= SHADOW_LIST_MAX;
       ranges[2 * key + 1] = listed ? uint32_t(out.size()) - start : TILE_USE_TREE;
       if (!listed) out.resize(start);
     }

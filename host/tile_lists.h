@@ -51,7 +51,8 @@ TileRect tilesOfPoints(const gpu::Frame& frame, const glm::dvec3* points, size_t
 std::vector<uint32_t> nearestFirst(const std::vector<gpu::Sphere>& spheres);
 
 // The lists for `spheres` (camera-relative, as packed) seen through `frame` (its camera axes,
-// width and height), each nearest first (nearestFirst). A sphere that reaches the camera plane is in every tile. Where the lists
-// would be long to build (the spheres' screen bounds cover more than TILE_FILL_LIMIT entries a
-// tile in all), every tile walks the tree: the host's work stays within O(spheres + tiles).
+// width and height), each nearest first (nearestFirst). A sphere that reaches the camera plane
+// is in every tile. Where the lists would be long to build (the spheres' screen bounds cover
+// more than TILE_FILL_LIMIT entries a tile in all), every tile walks the tree: the host's work
+// stays within O(spheres + tiles).
 TileLists buildTileLists(const gpu::Frame& frame, const std::vector<gpu::Sphere>& spheres);
