@@ -4,6 +4,7 @@
 #include "plane_frame.h"
 #include "noise_permutation.h"
 #include "scene_limits.h"
+#include "shadow_grid.h"
 #include "shadow_lists.h"
 #include "texture_kinds.h"
 
@@ -229,11 +230,17 @@ void packCamera(GpuScene& g, const Scene& scene, uint32_t width, uint32_t height
   if (g.shape.sphereTree != SPHERE_TREE_NONE) layoutSphereTree(g.sphereTree, g.spheres, g.treeNodes);
   // The lists also tell the tile kernels which kinds a tile can show (tile_kernels.h).
   g.tiles = g.spheres.empty() ? TileLists{} : buildTileLists(f, g.spheres);
-  if (g.shape.shadowLists) appendShadowLists(f, g.spheres, g.planes, g.lights, g.treeNodes, g.tiles);
+  if (g.shape.shadowLists) {
+    appendShadowLists(f, g.spheres, g.planes, g.lights, g.treeNodes, g.tiles);
+    // Only where the kernel reads them (shaders/sphere_tree.glsl, occludedInTile).
+    if (g.shape.sphereTree == SPHERE_TREE_STORAGE) appendShadowGrids(g.spheres, g.planes, g.lights, g.tiles);
+  }
   f.treeNodeCount = uint32_t(g.treeNodes.size());
   f.tileColumns = g.tiles.columns;
   f.shadowRanges = g.tiles.shadowRanges;
   f.shadowColumns = g.tiles.shadowColumns;
+  for (size_t l = 0; l < SHADOW_LIST_MAX_LIGHTS; ++l)
+    f.shadowGrids[l] = l < g.tiles.shadowGrids.size() ? g.tiles.shadowGrids[l] : gpu::ShadowGrid{0, 0, TILE_USE_TREE, 0, {}};
   f.sphereCount = uint32_t(g.spheres.size());
   f.planeCount = uint32_t(g.planes.size());
   f.lightCount = uint32_t(g.lights.size());

@@ -1,6 +1,7 @@
 #include "shadow_lists.h"
 
 #include "gpu_tree.h"
+#include "plane_shadow.h"
 
 #include <glm/geometric.hpp>
 
@@ -8,14 +9,6 @@
 #include <cmath>
 
 namespace {
-
-// A sphere's radius grown by 1e-4 of its size and its distances from the camera and the light:
-// far beyond the float rounding of the kernel's hit points, shadow-ray origins and sphere test.
-double paddedRadius(const gpu::Sphere& s, const glm::dvec3& light) {
-  const glm::dvec3 c(s.centerRadius);
-  const double r = s.centerRadius.w;
-  return r + 1e-4 * (glm::length(c) + r + glm::length(light));
-}
 
 // The cone from a light around a sphere A: every segment from a point of A to the light lies
 // in it, within `length` of the light, and so in the cylinder of radius `reach` around its
@@ -68,35 +61,20 @@ void spheresInCone(const Cone& cone, const std::vector<gpu::Sphere>& spheres, co
   }
 }
 
-// The tiles of B's shadow on a plane, for a light: the plane's points from which the segment to
-// the light meets B lie in the projection of B's padded bounding cube from the light onto the
-// plane, the hull of its corners' projections; clipped to the view (widened by two pixels)
-// and put on screen. Every tile where the projection is unbounded (B reaches the light's
-// height above the plane), none where B cannot lie between the plane and the light.
-class PlaneShadow {
+// The tiles of B's shadow on a plane (plane_shadow.h), clipped to the view (widened by two
+// pixels) and put on screen: every tile where the shadow is unbounded.
+class ShadowTiles {
  public:
-  PlaneShadow(const gpu::Frame& f, uint32_t columns, uint32_t rows)
+  ShadowTiles(const gpu::Frame& f, uint32_t columns, uint32_t rows)
       : f_(f), columns_(columns), rows_(rows), view_(viewSides(f)) {}
 
   TileRect tiles(const gpu::Sphere& b, const gpu::Plane& plane, const glm::dvec3& light) const {
-    const glm::dvec3 n(plane.normalDistance), c(b.centerRadius);
-    const double r = paddedRadius(b, light), lightHeight = glm::dot(n, light) - plane.normalDistance.w;
-    const TileRect all{0, 0, columns_ - 1, rows_ - 1};
-    if (!(lightHeight != 0.0)) return all;
-    glm::dvec3 corners[8], points[8];
-    boundingCubeCorners(c, r, corners);
-    int beyond = 0, above = 0, count = 0;
-    for (const glm::dvec3& q : corners) {
-      const double height = glm::dot(n, q) - plane.normalDistance.w;
-      const double s = lightHeight / (lightHeight - height);  // the plane at light + s (q - light)
-      beyond += height * lightHeight < 0.0;
-      if (!(s > 0.0 && std::isfinite(s))) ++above;
-      else points[count++] = light + s * (q - light);
-    }
-    if (beyond == 8 || above == 8) return {};
-    if (above > 0) return all;
-    if (insideView(points)) return tilesOfPoints(f_, points, 8, columns_, rows_);
-    const std::vector<glm::dvec3> clipped = clipToView(hull(std::vector<glm::dvec3>(points, points + 8), n));
+    const PlaneShadow shadow = planeShadow(b, plane, light);
+    if (shadow.extent == ShadowExtent::None) return {};
+    if (shadow.extent == ShadowExtent::Unbounded) return TileRect{0, 0, columns_ - 1, rows_ - 1};
+    if (insideView(shadow.points)) return tilesOfPoints(f_, shadow.points, 8, columns_, rows_);
+    const glm::dvec3 n(plane.normalDistance);
+    const std::vector<glm::dvec3> clipped = clipToView(hullOnPlane({shadow.points, shadow.points + 8}, n));
     return clipped.empty() ? TileRect{} : tilesOfPoints(f_, clipped.data(), clipped.size(), columns_, rows_);
   }
 
@@ -106,29 +84,6 @@ class PlaneShadow {
       for (const glm::dvec3& m : view_.inward)
         if (!(glm::dot(m, p) >= 0.0)) return false;
     return true;
-  }
-
-  // The convex hull of points on the plane of normal n, in order (monotone chain).
-  static std::vector<glm::dvec3> hull(std::vector<glm::dvec3> points, const glm::dvec3& n) {
-    const glm::dvec3 t = glm::normalize(glm::cross(n, std::abs(n.x) < 0.6 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0)));
-    const glm::dvec3 b = glm::cross(n, t);
-    auto key = [&](const glm::dvec3& p) { return std::make_pair(glm::dot(p, t), glm::dot(p, b)); };
-    std::sort(points.begin(), points.end(), [&](const glm::dvec3& p, const glm::dvec3& q) { return key(p) < key(q); });
-    auto turn = [&](const glm::dvec3& o, const glm::dvec3& p, const glm::dvec3& q) {
-      return glm::dot(glm::cross(p - o, q - o), n);
-    };
-    std::vector<glm::dvec3> h(2 * points.size());
-    size_t k = 0;
-    for (size_t i = 0; i < points.size(); ++i) {
-      while (k >= 2 && turn(h[k - 2], h[k - 1], points[i]) <= 0.0) --k;
-      h[k++] = points[i];
-    }
-    for (size_t i = points.size() - 1, lower = k + 1; i-- > 0;) {
-      while (k >= lower && turn(h[k - 2], h[k - 1], points[i]) <= 0.0) --k;
-      h[k++] = points[i];
-    }
-    h.resize(k > 1 ? k - 1 : k);
-    return h;
   }
 
   // The polygon cut to the view's four sides (Sutherland-Hodgman).
@@ -163,7 +118,7 @@ KeyedEntries planeShadowEntries(const gpu::Frame& f, const std::vector<gpu::Sphe
                                 const std::vector<gpu::Plane>& planes, const std::vector<gpu::Light>& lights,
                                 const TileLists& lists, std::vector<char>& tooMany) {
   const size_t cells = size_t(lists.shadowColumns) * lists.shadowRows, keys = cells * lights.size();
-  const PlaneShadow shadow(f, lists.columns, lists.rows);
+  const ShadowTiles shadow(f, lists.columns, lists.rows);
   struct Rect {
     uint32_t sphere, light;
     TileRect tiles;  // in cells

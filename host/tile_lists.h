@@ -24,6 +24,7 @@ struct TileLists {
   std::vector<uint32_t> spheres;  // indices into the packed spheres, each once in a list
   uint32_t shadowRanges = 0;      // the first word of the shadow lists' ranges (0: none)
   uint32_t shadowColumns = 0, shadowRows = 0;
+  std::vector<gpu::ShadowGrid> shadowGrids;  // per light (shadow_grid.h); empty: none
 };
 
 struct TileRect {

@@ -103,6 +103,10 @@ using uvec4 = glm::uvec4;
 #define SHADOW_LIST_MAX_PLANES 8u
 #define SHADOW_CELL 2u
 #define SHADOW_LIST_MAX 32u  // spheres in a cell's list for a light; over that its rays walk the tree
+// Where a cell's list is long, a shadow ray of a scene over MAX_UNIFORM_SPHERES from a point
+// between a plane and the light looks up the light's shadow grid (host/shadow_grid.h,
+// Frame.shadowGrids): a grid over the plane listing, per grid cell, the spheres whose shadow
+// covers it, two words a cell (first entry, count), row by row, in BINDING_TILE_RANGES.
 // Scenes with more spheres than the loop is specialised to (MAX_SPECIALISED_COUNT) walk the tree
 // (measured: docs/performance.md, "The sphere tree"); fewer keep the loop, unrolled.
 #define SPHERE_TREE_MIN_SPHERES 9
@@ -216,6 +220,15 @@ using uvec4 = glm::uvec4;
 
 // Every position on the GPU is relative to the camera (computed on the host in double),
 // so hit points near the camera stay exact however far the scene is from the origin.
+// A light's shadow grid over a plane, along the plane's tangent and binormal (Plane).
+struct ShadowGrid {
+  uint plane;       // the plane it lies on
+  uint columns;     // cells a row
+  uint rows;        // TILE_USE_TREE: the light has no grid
+  uint firstRange;  // the word of its first cell's range in BINDING_TILE_RANGES
+  vec4 corner;      // x, y: the grid's corner along the tangent and binormal; z: 1 / cell size
+};
+
 struct Frame {
   vec4 eye;            // xyz: camera position: (0, 0, 0), positions being camera-relative
   vec4 cameraRight;    // xyz: right axis * tan(fovY/2) * aspect
@@ -241,6 +254,7 @@ struct Frame {
   uint shadowColumns;  // shadow cells per row of the image
   uint pad1;
   uint pad2;
+  ShadowGrid shadowGrids[SHADOW_LIST_MAX_LIGHTS];  // per light
 };
 
 // Texture placement (docs/textures.md, "Texture placement") is packed by the host in double:
@@ -318,7 +332,8 @@ struct NoiseTable {
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(Frame) == 160, "Frame layout");
+static_assert(sizeof(ShadowGrid) == 32, "ShadowGrid layout");
+static_assert(sizeof(Frame) == 160 + 32 * SHADOW_LIST_MAX_LIGHTS, "Frame layout");
 static_assert(sizeof(Sphere) == 64, "Sphere layout");
 static_assert(sizeof(Plane) == 144, "Plane layout");
 static_assert(sizeof(Material) == 112, "Material layout");

@@ -97,14 +97,29 @@ void closestSphereInTile(vec3 o, vec3 d, inout Hit hit) {
   countLoop(passes);
 }
 
-// True if a sphere listed for the ray's cell of tiles and light (host/shadow_lists.h: every
-// sphere that can lie between the light and a point the cell sees; the lanes of a workgroup
-// share the list) lies on the segment from o along unit d before distance tMax, or one of the
-// tree's where the list is long.
-bool occludedInTile(vec3 o, vec3 d, float tMax, uint light) {
-  uint range = frame.shadowRanges + 2u * (shadowCell * lightCount() + light);
-  uint first = tileRanges[range], count = tileRanges[range + 1u];
-  if (count == TILE_USE_TREE) return occludedInTree(o, d, tMax);
+// The range of spheres listed for the cell of the light's shadow grid (host/shadow_grid.h)
+// where the line from the light through o meets the grid's plane, if o lies between the plane
+// and half the light's height above it (the point on the plane then lies no farther from o than
+// the light does); left as it is where the light has no grid or o lies elsewhere. Past the
+// grid's edge no shadow falls: an empty range.
+void shadowGridRange(vec3 o, vec3 d, float tMax, uint light, inout uint first, inout uint count) {
+  ShadowGrid grid = frame.shadowGrids[light];
+  if (grid.rows == TILE_USE_TREE) return;
+  Plane p = planeAt(grid.plane);
+  float height = dot(p.normalDistance.xyz, o) - p.normalDistance.w, rise = dot(p.normalDistance.xyz, d);
+  if (!(height >= 0.0 && rise > 0.0 && height <= rise * tMax)) return;
+  vec3 q = o - d * (height / rise);
+  vec2 cell = (vec2(dot(q, p.tangentScale.xyz), dot(q, p.binormal.xyz)) - grid.corner.xy) * grid.corner.z;
+  count = 0u;
+  if (!(cell.x >= 0.0 && cell.y >= 0.0 && cell.x < float(grid.columns) && cell.y < float(grid.rows))) return;
+  uint range = grid.firstRange + 2u * (uint(cell.y) * grid.columns + uint(cell.x));
+  first = tileRanges[range];
+  count = tileRanges[range + 1u];
+}
+
+// True if one of the `count` spheres listed from `first` lies on the segment from o along unit
+// d before distance tMax.
+bool occludedInList(uint first, uint count, vec3 o, vec3 d, float tMax) {
   uint passes = 0u;
   bool blocked = false;
   for (uint k = 0u; k < count; ++k) {
@@ -116,4 +131,29 @@ bool occludedInTile(vec3 o, vec3 d, float tMax, uint light) {
   }
   countLoop(passes);
   return blocked;
+}
+
+// True if a sphere listed for the light's shadow grid where the ray lands lies on the segment
+// from o along unit d before distance tMax, or one of the tree's where the grid does not reach.
+bool occludedInGrid(vec3 o, vec3 d, float tMax, uint light) {
+  uint first = 0u, count = TILE_USE_TREE;
+  shadowGridRange(o, d, tMax, light, first, count);
+  if (count == TILE_USE_TREE) return occludedInTree(o, d, tMax);
+  return occludedInList(first, count, o, d, tMax);
+}
+
+// True if a sphere listed for the ray's cell of tiles and light (host/shadow_lists.h: every
+// sphere that can lie between the light and a point the cell sees; the lanes of a workgroup
+// share the list) lies on the segment from o along unit d before distance tMax. Where the list
+// is long, the spheres of the light's shadow grid where the ray lands, in kernels whose spheres
+// are in storage buffers (lavapipe runs all of a kernel's code, and in smaller scenes the
+// grid's cost more than it saved: docs/performance.md, "Shadow grids"), or the tree's.
+bool occludedInTile(vec3 o, vec3 d, float tMax, uint light) {
+  uint range = frame.shadowRanges + 2u * (shadowCell * lightCount() + light);
+  uint first = tileRanges[range], count = tileRanges[range + 1u];
+  if (count == TILE_USE_TREE) {
+    if (SPHERE_TREE == SPHERE_TREE_STORAGE) return occludedInGrid(o, d, tMax, light);
+    return occludedInTree(o, d, tMax);
+  }
+  return occludedInList(first, count, o, d, tMax);
 }

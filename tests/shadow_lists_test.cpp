@@ -3,6 +3,7 @@
 // sphere_tree_test.cpp render them against the tree's shadow walk).
 #include "sphere_field.h"
 #include "gpu_scene.h"
+#include "packed_rays.h"
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
@@ -21,21 +22,12 @@ bool listed(const TileLists& lists, uint32_t lights, uint32_t cell, uint32_t lig
   return std::find(first, last, i) != last;
 }
 
-// The smallest t > 0 where the ray o + t d (d unit) meets the sphere, in double; infinity if none.
-double sphereDistance(glm::dvec3 o, glm::dvec3 d, const gpu::Sphere& s) {
-  const glm::dvec3 f = o - glm::dvec3(s.centerRadius);
-  const double r = s.centerRadius.w, b = glm::dot(f, d), disc = b * b - (glm::dot(f, f) - r * r);
-  if (disc < 0.0) return INFINITY;
-  const double t0 = -b - std::sqrt(disc), t1 = -b + std::sqrt(disc);
-  return t0 > 0.0 ? t0 : t1 > 0.0 ? t1 : INFINITY;
-}
 
 }  // namespace
 
 TEST(ShadowLists, EveryBlockingSphereIsListedForItsCellAndLight) {
   const uint32_t w = 240, h = 136;
   std::mt19937 rng{7};
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
   for (const std::string eye : {"(0, 1, 4)", "(9, 2, -4)", "(-3, 0.5, -14)", "(0, 8, 2)"}) {
     SCOPED_TRACE("eye " + eye);
     const Scene scene = litField(300, eye);
@@ -54,17 +46,8 @@ TEST(ShadowLists, EveryBlockingSphereIsListedForItsCellAndLight) {
     for (uint32_t y = 0; y < h; ++y)
       for (uint32_t x = 0; x < w; ++x) {
         // A point anywhere in the pixel (the samples of --spp), camera-relative.
-        const double fx = (x + unit(rng)) / w * 2.0 - 1.0, fy = 1.0 - (y + unit(rng)) / h * 2.0;
-        const glm::dvec3 d = glm::normalize(glm::dvec3(g.frame.cameraForward) + fx * glm::dvec3(g.frame.cameraRight) +
-                                            fy * glm::dvec3(g.frame.cameraUp));
-        double t = INFINITY;
-        for (const gpu::Sphere& s : g.spheres) t = std::min(t, sphereDistance({}, d, s));
-        for (const gpu::Plane& p : g.planes) {
-          const double tp = double(p.normalDistance.w) / glm::dot(glm::dvec3(p.normalDistance), d);
-          if (tp > 0.0) t = std::min(t, tp);
-        }
-        if (!std::isfinite(t)) continue;
-        const glm::dvec3 point = t * d;
+        glm::dvec3 point;
+        if (!firstHit(g, x, y, w, h, rng, point)) continue;
         const uint32_t cell = (y / (TILE_SIZE * SHADOW_CELL)) * lists.shadowColumns + x / (TILE_SIZE * SHADOW_CELL);
         for (uint32_t l = 0; l < lights; ++l) {
           const glm::dvec3 toLight = glm::dvec3(g.lights[l].position) - point;

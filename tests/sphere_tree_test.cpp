@@ -5,6 +5,7 @@
 #include "gpu_fixture.h"
 #include "sphere_field.h"
 #include "gpu_scene.h"
+#include "long_shadow_lists.h"
 #include "parser.h"
 #include "reference.h"
 #include "texture_kinds.h"
@@ -158,9 +159,48 @@ TEST_F(SphereTreeTest, EmptyShadowListsChangeTheImage) {
   GpuScene g = buildGpuScene(scene, 128, 72);
   ASSERT_TRUE(g.shape.shadowLists);
   const std::vector<float> right = renderPacked(g, OUTPUT_SHADED, FILTER_POINT);
+  ASSERT_TRUE(g.tiles.shadowGrids.empty());  // under MAX_UNIFORM_SPHERES: no grids after the lists
   for (size_t t = g.tiles.shadowRanges + 1; t < g.tiles.ranges.size(); t += 2)
     if (g.tiles.ranges[t] != TILE_USE_TREE) g.tiles.ranges[t] = 0;
   EXPECT_GT(differing(right, renderPacked(g, OUTPUT_SHADED, FILTER_POINT)), 1000u);
+}
+
+// Shadow rays through the grids (shadow_grid.h; scenes over MAX_UNIFORM_SPHERES), every cell's
+// list marked long so that each ray between a grid's plane and its light looks its grid up,
+// find what the tree's walk finds.
+TEST_F(SphereTreeTest, ShadowGridsRenderWhatTheTreeWalkRenders) {
+  const std::string eyes[] = {"(0, 1, 4)", "(9, 2, -4)", "(-3, 0.5, -14)", "(2, -1.9, 3)", "(0, 8, 2)"};
+  std::vector<std::pair<std::string, Scene>> scenes;
+  for (int n : {1100, 4000})
+    for (const std::string& eye : eyes) {
+      scenes.emplace_back(std::to_string(n) + " spheres, eye " + eye, field(n, eye));
+      scenes.emplace_back(std::to_string(n) + " spheres, four lights, eye " + eye, litField(n, eye));
+    }
+  Scene inside = litField(1100, "(0, 1, 4)");
+  inside.camera.eye = inside.spheres[7].center;
+  inside.camera.lookat = inside.camera.eye + glm::dvec3(0.3, -0.2, -1.0);
+  scenes.emplace_back("inside a sphere", inside);
+  for (const auto& [name, scene] : scenes) {
+    SCOPED_TRACE(name);
+    GpuScene g = buildGpuScene(scene, 128, 72);
+    ASSERT_EQ(g.shape.sphereTree, uint32_t(SPHERE_TREE_STORAGE));
+    ASSERT_TRUE(g.shape.shadowLists);
+    markShadowListsLong(g);
+    ASSERT_NE(g.frame.shadowGrids[0].rows, TILE_USE_TREE);  // the course's light has one
+    EXPECT_EQ(differing(renderPacked(g, OUTPUT_SHADED, FILTER_POINT), renderPacked(g, OUTPUT_SHADED, FILTER_POINT, false)),
+              0u);
+  }
+}
+
+// The comparison can fail: with the course light's grid emptied, its shadows go.
+TEST_F(SphereTreeTest, EmptyShadowGridsChangeTheImage) {
+  GpuScene g = buildGpuScene(litField(1100, "(0, 1, 4)"), 128, 72);
+  ASSERT_TRUE(g.shape.shadowLists);
+  markShadowListsLong(g);
+  const std::vector<float> right = renderPacked(g, OUTPUT_SHADED, FILTER_POINT);
+  const gpu::ShadowGrid& grid = g.frame.shadowGrids[0];
+  for (size_t c = 0; c < size_t(grid.columns) * grid.rows; ++c) g.tiles.ranges[grid.firstRange + 2 * c + 1] = 0;
+  EXPECT_GT(differing(right, renderPacked(g, OUTPUT_SHADED, FILTER_POINT)), 100u);
 }
 
 // Over MAX_UNIFORM_SPHERES the spheres and nodes are read from storage buffers: each reliable

@@ -19,5 +19,5 @@ export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:strict_string_checks=1:detec
 export LSAN_OPTIONS=suppressions=$supp/lsan.supp:print_suppressions=0
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 export RAYTEX_SANITIZED=1  # tests/cli_test.sh, output_test.sh: skip the address-space limit tests (ASan's shadow needs terabytes)
-SWEEPS='BakedKernelsMatchTheUniformBuffers|(CourseScenes|Fields)RenderWhatTheOneKernelRenders|NoiseFilterTest|ShadowListsRenderWhatTheTreeWalkRenders|RendersWhatTheLoopOverEverySphereRenders'
+SWEEPS='BakedKernelsMatchTheUniformBuffers|(CourseScenes|Fields)RenderWhatTheOneKernelRenders|NoiseFilterTest|Shadow(Lists|Grids)RenderWhatTheTreeWalkRenders|RendersWhatTheLoopOverEverySphereRenders'
 ctest --test-dir "$build" -LE fuzz -E "$SWEEPS" --output-on-failure -j2
