@@ -91,6 +91,7 @@ def main():
     if args.n < 1:
         parser.error("N must be at least 1")
     field = spheres(args.n, args.seed)
+    os.makedirs(args.out, exist_ok=True)
     base = os.path.join(args.out, "field-%d" % args.n)
     with open(base + ".cfg", "w") as f:
         f.write(raytex_scene(field))
