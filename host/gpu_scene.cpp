@@ -240,7 +240,7 @@ void packCamera(GpuScene& g, const Scene& scene, uint32_t width, uint32_t height
   f.shadowRanges = g.tiles.shadowRanges;
   f.shadowColumns = g.tiles.shadowColumns;
   for (size_t l = 0; l < SHADOW_LIST_MAX_LIGHTS; ++l)
-    f.shadowGrids[l] = l < g.tiles.shadowGrids.size() ? g.tiles.shadowGrids[l] : gpu::ShadowGrid{0, 0, TILE_USE_TREE, 0, {}};
+    f.shadowGrids[l] = l < g.tiles.shadowGrids.size() ? g.tiles.shadowGrids[l] : noShadowGrid();
   f.sphereCount = uint32_t(g.spheres.size());
   f.planeCount = uint32_t(g.planes.size());
   f.lightCount = uint32_t(g.lights.size());

@@ -20,17 +20,19 @@ struct Shadow {
   glm::dvec2 lo, hi;
 };
 
-// The plane's normal and axes and every sphere's shadow on it, or false where a shadow is
-// unbounded.
+// The plane's axes and every sphere's shadow on it.
 struct PlaneShadows {
-  glm::dvec3 n, t, b;
+  glm::dvec3 t, b;
   std::vector<Shadow> shadows;
 };
 
+// Cells a side of a grid, at most.
+constexpr uint32_t kMaxGridSide = 4096;
+
+// The shadows on plane p, in `out`; false where the light is not above p or a shadow is unbounded.
 bool shadowsOnPlane(const std::vector<gpu::Sphere>& spheres, const gpu::Plane& p, const glm::dvec3& light,
                     PlaneShadows& out) {
-  out.n = glm::dvec3(p.normalDistance);
-  if (!(glm::dot(out.n, light) - p.normalDistance.w > 0.0)) return false;  // the light is not above it
+  if (!(glm::dot(glm::dvec3(p.normalDistance), light) - p.normalDistance.w > 0.0)) return false;
   out.t = glm::dvec3(p.tangentScale), out.b = glm::dvec3(p.binormal);
   out.shadows.clear();
   std::vector<glm::dvec2> uv(8);
@@ -62,7 +64,7 @@ Grid gridOver(const std::vector<Shadow>& shadows) {
   glm::dvec2 lo(INFINITY), hi(-INFINITY);
   for (const Shadow& s : shadows) lo = glm::min(lo, s.lo), hi = glm::max(hi, s.hi);
   const glm::dvec2 size = glm::max(hi - lo, glm::dvec2(1e-9 * (glm::length(lo) + glm::length(hi))));
-  const double limit = 4096.0;  // cells a side
+  const double limit = kMaxGridSide;
   g.cell = std::max({std::sqrt(size.x * size.y / double(shadows.size())), size.x / (limit - 2), size.y / (limit - 2)});
   g.corner = lo - g.cell;
   g.columns = uint32_t(std::ceil(size.x / g.cell)) + 2;
@@ -91,7 +93,8 @@ glm::dvec2 spanInBand(const Shadow& s, double v0, double v1) {
 // row, each cell grown by `margin` (the kernel's rounding of the point it looks up).
 template <typename Visit>
 void eachCell(const Grid& g, const Shadow& s, double margin, Visit&& visit) {
-  const auto index = [&](double x) { return uint32_t(std::clamp(std::floor(x / g.cell), 0.0, 4095.0)); };
+  const double last = kMaxGridSide - 1;
+  const auto index = [&](double x) { return uint32_t(std::clamp(std::floor(x / g.cell), 0.0, last)); };
   const glm::dvec2 lo = s.lo - g.corner - margin, hi = s.hi - g.corner + margin;
   const uint32_t y1 = std::min(index(hi.y), g.rows - 1);
   for (uint32_t y = index(lo.y); y <= y1; ++y) {
@@ -116,7 +119,7 @@ gpu::ShadowGrid appendGrid(const PlaneShadows& ps, uint32_t plane, const glm::dv
   std::vector<std::pair<uint32_t, uint32_t>> pairs;  // (cell, sphere)
   for (const Shadow& s : ps.shadows) {
     eachCell(g, s, margin, [&](size_t c) { pairs.emplace_back(uint32_t(c), s.sphere); });
-    if (pairs.size() > limit) return gpu::ShadowGrid{0, 0, TILE_USE_TREE, 0, {}};
+    if (pairs.size() > limit) return noShadowGrid();
   }
   std::vector<uint32_t> first(cells + 1, 0);
   for (const auto& [c, sphere] : pairs) ++first[c + 1];
@@ -124,7 +127,10 @@ gpu::ShadowGrid appendGrid(const PlaneShadows& ps, uint32_t plane, const glm::dv
   const gpu::ShadowGrid grid{plane, g.columns, g.rows, uint32_t(lists.ranges.size()),
                              glm::vec4(float(g.corner.x), float(g.corner.y), float(1.0 / g.cell), 0.0f)};
   const uint32_t base = uint32_t(lists.spheres.size());
-  for (size_t c = 0; c < cells; ++c) lists.ranges.push_back(base + first[c]), lists.ranges.push_back(first[c + 1] - first[c]);
+  for (size_t c = 0; c < cells; ++c) {
+    lists.ranges.push_back(base + first[c]);
+    lists.ranges.push_back(first[c + 1] - first[c]);
+  }
   lists.spheres.resize(base + first[cells]);
   for (const auto& [c, sphere] : pairs) lists.spheres[base + first[c]++] = sphere;
   return grid;
@@ -142,7 +148,7 @@ bool someListIsLong(const TileLists& lists, size_t lights, size_t l) {
 
 void appendShadowGrids(const std::vector<gpu::Sphere>& spheres, const std::vector<gpu::Plane>& planes,
                        const std::vector<gpu::Light>& lights, TileLists& lists) {
-  lists.shadowGrids.assign(lights.size(), gpu::ShadowGrid{0, 0, TILE_USE_TREE, 0, {}});
+  lists.shadowGrids.assign(lights.size(), noShadowGrid());
   for (size_t l = 0; l < lights.size(); ++l) {
     if (!someListIsLong(lists, lights.size(), l)) continue;
     const glm::dvec3 light(lights[l].position);

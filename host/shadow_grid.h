@@ -14,6 +14,9 @@
 
 #include <vector>
 
+// A light without a grid (its rays walk the tree where their cell's list is long).
+inline gpu::ShadowGrid noShadowGrid() { return gpu::ShadowGrid{0, 0, TILE_USE_TREE, 0, {}}; }
+
 // Sets lists.shadowGrids, a grid per light (common.h, ShadowGrid), its cell ranges appended to
 // lists.ranges and its entries to lists.spheres. A light gets none (rows TILE_USE_TREE) where
 // every cell's list is short, where no plane lies below it with every sphere's shadow on it

@@ -218,8 +218,6 @@ using uvec4 = glm::uvec4;
 // four per uvec4 (std140 pads scalar arrays to 16 bytes, so pack them).
 #define NOISE_PERM_SIZE 512
 
-// Every position on the GPU is relative to the camera (computed on the host in double),
-// so hit points near the camera stay exact however far the scene is from the origin.
 // A light's shadow grid over a plane, along the plane's tangent and binormal (Plane).
 struct ShadowGrid {
   uint plane;       // the plane it lies on
@@ -229,6 +227,8 @@ struct ShadowGrid {
   vec4 corner;      // x, y: the grid's corner along the tangent and binormal; z: 1 / cell size
 };
 
+// Every position on the GPU is relative to the camera (computed on the host in double),
+// so hit points near the camera stay exact however far the scene is from the origin.
 struct Frame {
   vec4 eye;            // xyz: camera position: (0, 0, 0), positions being camera-relative
   vec4 cameraRight;    // xyz: right axis * tan(fovY/2) * aspect

@@ -37,7 +37,6 @@ bool gridRange(const GpuScene& g, uint32_t light, glm::vec3 o, glm::vec3 d, floa
   return true;
 }
 
-
 // The scene moved by `offset`, camera and lights too.
 Scene moved(Scene scene, glm::dvec3 offset) {
   scene.camera.eye += offset, scene.camera.lookat += offset;

@@ -22,7 +22,6 @@ bool listed(const TileLists& lists, uint32_t lights, uint32_t cell, uint32_t lig
   return std::find(first, last, i) != last;
 }
 
-
 }  // namespace
 
 TEST(ShadowLists, EveryBlockingSphereIsListedForItsCellAndLight) {
