@@ -45,7 +45,6 @@ TEST(NoisePermutation, IsDeterministic) {
   const uint32_t first[8] = {180, 125, 203, 221, 61, 132, 192, 73};
   for (int i = 0; i < 8; ++i) EXPECT_EQ(p[i], first[i]) << i;
   EXPECT_EQ(p[255], 237u);
-  EXPECT_EQ(&noisePermutation(), &p);
 }
 
 TEST(NoisePermutation, FillNoiseTablePacksNeighbourPairsFourPerVector) {
@@ -60,9 +59,8 @@ TEST(NoisePermutation, FillNoiseTablePacksNeighbourPairsFourPerVector) {
   EXPECT_EQ(table.pairs[127][3] >> 16, p[0]);
 }
 
-TEST(NoiseValue, SameValueTwiceAndPinned) {
+TEST(NoiseValue, Pinned) {
   const glm::dvec3 p(-1.25, 3.7, 100.3);
-  EXPECT_EQ(perlinNoise(p), perlinNoise(p));
   EXPECT_NEAR(perlinNoise(p), 0.25952071102453111, 1e-15);
   // At a cell centre every corner value is +-0.5 +- 0.5 (or 0), weights 1/8 each.
   EXPECT_NEAR(perlinNoise(glm::dvec3(0.5)), -0.125, 1e-15);
