@@ -4,5 +4,5 @@
 
 #include "cli.h"
 
-// Exit code as renderHeadless.
-int runBench(const RenderOptions& options, const BenchOptions& bench);
+// Throws an Error (error.h) as renderHeadless does.
+void runBench(const RenderOptions& options, const BenchOptions& bench);

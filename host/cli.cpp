@@ -2,227 +2,338 @@
 
 #include "texture_kinds.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
 
 namespace {
 
-bool parseUint(const std::string& flag, const std::string& text, uint32_t lo, uint32_t hi,
-               uint32_t* out, std::string* error) {
+// The commands an option applies to, as bits.
+enum : unsigned { kRender = 1, kView = 2, kBench = 4, kAll = kRender | kView | kBench };
+
+uint32_t parseUint(const std::string& flag, const std::string& text, uint32_t lo, uint32_t hi) {
   char* end = nullptr;
   errno = 0;
   unsigned long long v = strtoull(text.c_str(), &end, 10);
-  if (text.empty() || text[0] == '-' || *end != '\0' || errno == ERANGE || v < lo || v > hi) {
-    *error = flag + " expects an integer from " + std::to_string(lo) + " to " + std::to_string(hi) +
-             ", got '" + text + "'";
-    return false;
+  if (text.empty() || text[0] == '-' || *end != '\0' || errno == ERANGE || v < lo || v > hi)
+    throw UsageError(flag + " expects an integer from " + std::to_string(lo) + " to " + std::to_string(hi) +
+                     ", got '" + text + "'");
+  return uint32_t(v);
+}
+
+uint32_t parseSpp(const std::string& flag, const std::string& text) {
+  uint32_t n = parseUint(flag, text, 1, 4096);
+  uint32_t side = 1;
+  while (side * side < n) ++side;
+  if (side * side != n) throw UsageError(flag + " must be a square number (1, 4, 9, 16, ...), got " + text);
+  return n;
+}
+
+bool parseFilter(const std::string& flag, const std::string& text) {
+  if (text != "point" && text != "box") throw UsageError(flag + " expects point or box, got '" + text + "'");
+  return text == "box";
+}
+
+std::string nonEmpty(const std::string& flag, const std::string& text, const char* what) {
+  if (text.empty()) throw UsageError(flag + " needs " + what);
+  return text;
+}
+
+// One row per option: parsing, --help and docs/cli.md read this table and nothing else.
+struct CliOption {
+  const char* name;   // "--width"
+  const char* alias;  // "-o", or nullptr
+  const char* value;  // the value's name in the help ("W"); nullptr: a flag without a value
+  unsigned commands;  // kRender | kView | kBench
+  const char* help;   // one sentence; --help wraps it
+  void (*apply)(CliArgs& cli, const std::string& flag, const std::string& value);
+};
+
+const CliOption kOptions[] = {
+    {"--output", "-o", "FILE", kAll,
+     "the PNG to write (default out.png; bench writes one only when given), atomically; a device or FIFO "
+     "is written through; - is standard output (render only); the scene's own files are refused",
+     [](CliArgs& c, const std::string& f, const std::string& v) { c.render.output = nonEmpty(f, v, "a file name"); }},
+    {"--width", nullptr, "W", kAll, "image width in pixels (default: the scene's render block, else 640)",
+     [](CliArgs& c, const std::string& f, const std::string& v) { c.render.width = parseUint(f, v, 1, kMaxImageSide); }},
+    {"--height", nullptr, "H", kAll, "image height in pixels (default: the scene's render block, else 480)",
+     [](CliArgs& c, const std::string& f, const std::string& v) { c.render.height = parseUint(f, v, 1, kMaxImageSide); }},
+    {"--spp", nullptr, "N", kAll,
+     "samples per pixel, a square number (1, 4, 9, ...): an N x N stratified grid, box filtered (default: the "
+     "scene's render block, else 1 for render and bench, 64 for view)",
+     [](CliArgs& c, const std::string& f, const std::string& v) { c.render.samplesPerPixel = parseSpp(f, v); }},
+    {"--filter", nullptr, "MODE", kAll,
+     "texture filtering: point (default: sample at the hit) or box (average checkers over each sample's "
+     "footprint from ray differentials)",
+     [](CliArgs& c, const std::string& f, const std::string& v) { c.render.filter = parseFilter(f, v); }},
+    {"--reference", nullptr, nullptr, kRender,
+     "render on the CPU in float64 (slow; the accuracy reference), no Vulkan",
+     [](CliArgs& c, const std::string&, const std::string&) { c.render.reference = true; }},
+    {"--device", nullptr, "N", kAll,
+     "Vulkan device index from `raytex devices` (default: the best GPU, else the CPU driver lavapipe)",
+     [](CliArgs& c, const std::string& f, const std::string& v) { c.render.device = int(parseUint(f, v, 0, 255)); }},
+    {"--frames", nullptr, "N", kView, "quit after N frames, accumulation restarting (for benchmarks)",
+     [](CliArgs& c, const std::string& f, const std::string& v) { c.render.frames = parseUint(f, v, 1, 1000000); }},
+    {"--runs", nullptr, "N", kBench, "renders to take medians over, 1 to 1000 (default 5)",
+     [](CliArgs& c, const std::string& f, const std::string& v) { c.bench.runs = parseUint(f, v, 1, 1000); }},
+    {"--json", nullptr, nullptr, kBench, "print one JSON object (keys in docs/performance.md) instead of the table",
+     [](CliArgs& c, const std::string&, const std::string&) { c.bench.json = true; }},
+    {"--stats", nullptr, nullptr, kRender | kView,
+     "render: print one line of phase times in milliseconds; view: frame and material-switch times at exit",
+     [](CliArgs& c, const std::string&, const std::string&) { c.render.stats = true; }},
+    {"--validate", nullptr, nullptr, kAll, "enable Vulkan validation layers (also RAYTEX_VALIDATION=1)",
+     [](CliArgs& c, const std::string&, const std::string&) { c.render.validate = true; }},
+    {"--max-image-mib", nullptr, "N", kAll,
+     "refuse a scene whose image textures would upload more than N MiB (default 512)",
+     [](CliArgs& c, const std::string& f, const std::string& v) { c.render.maxImageMiB = parseUint(f, v, 1, 1048576); }},
+    {"--allow-read", nullptr, "DIR", kAll,
+     "read #include files and images only inside DIR (repeatable; the scene named is always read): "
+     "docs/security.md",
+     [](CliArgs& c, const std::string& f, const std::string& v) {
+       c.render.allowRead.push_back(nonEmpty(f, v, "a directory"));
+     }},
+};
+
+// Options without effect when another is given: refused rather than ignored.
+struct NoEffect {
+  const char* when;    // an option given
+  const char* option;  // an option that then does nothing
+  const char* why;
+};
+const NoEffect kNoEffect[] = {
+    {"--reference", "--filter", "the reference samples each texture at its hit point"},
+    {"--reference", "--device", "the reference renders on the CPU"},
+    {"--reference", "--validate", "the reference uses no Vulkan"},
+};
+
+const struct {
+  CliCommand command;
+  const char* name;
+  unsigned bit;
+  const char* summary;
+} kCommands[] = {
+    {CliCommand::Render, "render", kRender, "Ray-trace SCENE (a .cfg file) on a Vulkan device and write a PNG."},
+    {CliCommand::View, "view", kView,
+     "Show SCENE in a window, rendered by the same kernel one sample per frame and accumulated while nothing "
+     "changes, up to --spp samples. Saving the scene file reloads it; the title shows the materials, samples "
+     "and ms/frame."},
+    {CliCommand::Bench, "bench", kBench,
+     "Render SCENE --runs times, each a whole render from parse to PNG, and print the median time of each "
+     "phase, the GPU time per frame (timestamps, one extra frame per run), Mpixel/s and Mray/s (primary + "
+     "shadow rays)."},
+};
+
+const char* const kViewKeys =
+    "view keys:\n"
+    "  1-8        a course material on the sphere: aSolidChecker, aNoise, aMarble, aWood, anImage,\n"
+    "             aTurbulence, aDturbulence, aChecker\n"
+    "  P          the next course material on the plane\n"
+    "  arrows, WASD, left-drag   orbit the camera around its lookat point\n"
+    "  +/-, PageUp/PageDown, scroll   zoom\n"
+    "  R          reset the view to the scene file's camera\n"
+    "  F12        write -o FILE (default out.png) once every sample is in: the PNG raytex render\n"
+    "             writes with the same view, size, --spp and --filter\n"
+    "  Esc, Q     quit\n";
+
+const char* const kExitCodes =
+    "exit codes:\n"
+    "  0  success\n"
+    "  1  a device or Vulkan failure (an image the device cannot hold included), out of memory,\n"
+    "     an output file or standard output not written, an internal error\n"
+    "  2  bad input: usage, a scene, an image file refused, an output raytex may not write\n";
+
+const CliOption* findOption(const std::string& name) {
+  for (const CliOption& o : kOptions)
+    if (name == o.name || (o.alias && name == o.alias)) return &o;
+  return nullptr;
+}
+
+unsigned commandBit(CliCommand command) {
+  for (const auto& c : kCommands)
+    if (c.command == command) return c.bit;
+  return 0;
+}
+
+// "render", "render and view", "render, view and bench".
+std::string commandList(unsigned bits) {
+  std::vector<std::string> names;
+  for (const auto& c : kCommands)
+    if (bits & c.bit) names.push_back(c.name);
+  std::string out;
+  for (size_t i = 0; i < names.size(); ++i)
+    out += (i == 0 ? "" : i + 1 == names.size() ? " and " : ", ") + names[i];
+  return out;
+}
+
+// The command word, or Help/Version/Devices that take no options.
+CliCommand parseCommand(const std::vector<std::string>& args) {
+  if (args.empty()) throw UsageError("missing command (try raytex --help)");
+  const std::string& word = args[0];
+  if (word == "--help" || word == "-h" || word == "help") return CliCommand::Help;
+  if (word == "--version") return CliCommand::Version;
+  if (word == "devices") {
+    if (args.size() > 1) throw UsageError("devices takes no arguments");
+    return CliCommand::Devices;
   }
-  *out = uint32_t(v);
-  return true;
+  for (const auto& c : kCommands)
+    if (word == c.name) return c.command;
+  throw UsageError("unknown command '" + word + "' (try raytex --help)");
+}
+
+// Splits "--name=value"; a name without '=' has no inline value.
+void splitInline(const std::string& arg, std::string* name, std::optional<std::string>* value) {
+  size_t eq = arg.find('=');
+  if (arg.rfind("--", 0) != 0 || eq == std::string::npos) {
+    *name = arg;
+    return;
+  }
+  *name = arg.substr(0, eq);
+  *value = arg.substr(eq + 1);
+}
+
+// Applies the option at args[*i] (and its value), advancing *i past what it used.
+const CliOption& applyOption(const std::vector<std::string>& args, size_t* i, CliArgs* cli) {
+  std::string name;
+  std::optional<std::string> value;
+  splitInline(args[*i], &name, &value);
+  const CliOption* o = findOption(name);
+  if (!o) throw UsageError("unknown option '" + name + "' (try raytex --help)");
+  const std::string command = args[0];
+  if (!(o->commands & commandBit(cli->command)))
+    throw UsageError(name + " is an option of raytex " + commandList(o->commands) + ", not of " + command);
+  if (!o->value && value) throw UsageError(name + " takes no value");
+  if (o->value && !value) {
+    if (*i + 1 >= args.size()) throw UsageError(name + " needs a value");
+    value = args[++*i];
+  }
+  o->apply(*cli, name, value.value_or(""));
+  return *o;
+}
+
+// Refuses an option that does nothing with the others given (kNoEffect, and -o - where
+// standard output carries something else).
+void refuseWithoutEffect(const CliArgs& cli, const std::vector<std::string>& given) {
+  auto has = [&](const char* name) {
+    for (const std::string& g : given)
+      if (g == name) return true;
+    return false;
+  };
+  for (const NoEffect& n : kNoEffect)
+    if (has(n.when) && has(n.option))
+      throw UsageError(std::string(n.option) + " has no effect with " + n.when + ": " + n.why);
+  if (cli.render.output != "-") return;
+  if (cli.command != CliCommand::Render)
+    throw UsageError("-o - (standard output) is for raytex render; bench and view write files");
+  if (cli.render.stats) throw UsageError("--stats prints to standard output, which -o - fills with the PNG");
+}
+
+}  // namespace
+
+CliArgs parseCli(const std::vector<std::string>& args) {
+  CliArgs cli;
+  cli.command = parseCommand(args);
+  if (cli.command == CliCommand::Help || cli.command == CliCommand::Version || cli.command == CliCommand::Devices)
+    return cli;
+  std::vector<std::string> given;  // long names of the options given
+  for (size_t i = 1; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    if (a == "--help" || a == "-h") return CliArgs{};
+    if (!a.empty() && a[0] == '-' && a != "-") {
+      given.push_back(applyOption(args, &i, &cli).name);
+    } else if (cli.render.scene.empty()) {
+      cli.render.scene = a;
+    } else {
+      throw UsageError("more than one scene given ('" + cli.render.scene + "', '" + a + "')");
+    }
+  }
+  if (cli.render.scene.empty())
+    throw UsageError(args[0] + " needs a scene file (e.g. raytex " + args[0] + " scenes/textures.cfg)");
+  refuseWithoutEffect(cli, given);
+  const bool outputGiven = std::find(given.begin(), given.end(), "--output") != given.end();
+  if (cli.command == CliCommand::Bench && !outputGiven) cli.render.output.clear();
+  const char* env = getenv("RAYTEX_VALIDATION");
+  if (env && std::string(env) == "1" && !cli.render.reference) cli.render.validate = true;
+  return cli;
+}
+
+RenderJob resolveJob(const RenderOptions& options, const RenderSettings& s, uint32_t defaultSamplesPerPixel) {
+  RenderJob job;
+  job.width = options.width.value_or(uint32_t(s.width.value_or(640)));
+  job.height = options.height.value_or(uint32_t(s.height.value_or(480)));
+  job.samplesPerPixel =
+      options.samplesPerPixel.value_or(s.samplesPerPixel ? uint32_t(*s.samplesPerPixel) : defaultSamplesPerPixel);
+  job.samplesPerSide = uint32_t(std::lround(std::sqrt(double(job.samplesPerPixel))));
+  job.filterBox = options.filter.value_or(s.filterBox.value_or(false));
+  if (uint64_t(job.width) * job.height > kMaxPixels)
+    throw UsageError(std::to_string(job.width) + "x" + std::to_string(job.height) + " exceeds the limit of " +
+                     std::to_string(kMaxPixels) + " pixels (8192x8192)");
+  return job;
+}
+
+namespace {
+
+// `text` wrapped to lines of at most `width` characters: the first after `indent` spaces, the
+// rest after `hanging`.
+std::string wrapped(const std::string& text, size_t indent, size_t width, size_t hanging) {
+  std::string out, line;
+  size_t start = 0;
+  while (start < text.size()) {
+    size_t end = text.find(' ', start);
+    if (end == std::string::npos) end = text.size();
+    std::string word = text.substr(start, end - start);
+    if (!line.empty() && indent + line.size() + 1 + word.size() > width) {
+      out += std::string(indent, ' ') + line + "\n";
+      line.clear();
+      indent = hanging;
+    }
+    line += (line.empty() ? "" : " ") + word;
+    start = end + 1;
+  }
+  return out + std::string(indent, ' ') + line + "\n";
+}
+
+std::string optionSignature(const CliOption& o) {
+  std::string s = o.alias ? std::string(o.alias) + ", " + o.name : o.name;
+  return o.value ? s + " " + o.value : s;
+}
+
+std::string synopsis(const char* command, unsigned bit) {
+  std::string words = std::string("raytex ") + command + " SCENE";
+  for (const CliOption& o : kOptions)
+    if (o.commands & bit) {
+      std::string shortest = o.alias ? o.alias : o.name;
+      words += " [" + shortest + (o.value ? std::string(" ") + o.value : "") + "]";
+      if (std::string(o.name) == "--allow-read") words += "...";
+    }
+  return words;
 }
 
 }  // namespace
 
 std::string usageText() {
-  return std::string("usage: raytex render SCENE [-o out.png] [--width W] [--height H] [--spp N]\n"
-         "                    [--filter point|box] [--reference] [--device N] [--stats] [--validate]\n"
-         "                    [--max-image-mib N] [--allow-read DIR]...\n"
-         "       raytex view SCENE [-o shot.png] [--width W] [--height H] [--spp N] [--filter point|box]\n"
-         "                  [--device N] [--frames N] [--stats] [--validate] [--max-image-mib N]\n"
-         "                  [--allow-read DIR]...\n"
-         "       raytex bench SCENE [--width W] [--height H] [--spp N] [--filter point|box] [--runs N]\n"
-         "                   [--json] [-o out.png] [--device N] [--validate] [--max-image-mib N]\n"
-         "                   [--allow-read DIR]...\n"
-         "       raytex devices\n"
-         "       raytex --help | --version\n"
-         "\n"
-         "render   Ray-trace SCENE (a .cfg file) on a Vulkan device and write a PNG.\n"
-         "  -o, --output FILE  output PNG (default out.png), written atomically; a device or FIFO is\n"
-         "                     written through (not atomic); the scene's own files are refused\n"
-         "  --width W          image width in pixels (default: the scene's render block, else 640)\n"
-         "  --height H         image height in pixels (default: the scene's render block, else 480)\n"
-         "  --spp N            samples per pixel, a square number (1, 4, 9, 16, ...): an N x N\n"
-         "                     stratified grid, box filtered (default 1: the pixel centre)\n"
-         "  --filter MODE      texture filtering: point (default: sample at the hit) or box (average\n"
-         "                     checkers over each sample's footprint from ray differentials)\n"
-         "  --reference        render on the CPU in float64 (slow; the accuracy reference), no Vulkan\n"
-         "  --device N         Vulkan device index from `raytex devices` (default: the best GPU,\n"
-         "                     else the CPU driver lavapipe)\n"
-         "  --stats            print one line of phase times in milliseconds\n"
-         "  --validate         enable Vulkan validation layers (also RAYTEX_VALIDATION=1)\n"
-         "  --max-image-mib N  refuse a scene whose image textures would upload more than N MiB\n"
-         "                     (default 512; also view and bench)\n"
-         "  --allow-read DIR   read #include files and images only inside DIR (repeatable; the scene\n"
-         "                     named here is always read; also view and bench): docs/security.md\n"
-         "view     Show SCENE in a window, rendered by the same kernel one sample per frame and\n"
-         "         accumulated while nothing changes, up to --spp samples (default: the scene's\n"
-         "         render block, else 64). Keys:\n"
-         "           1-8        a course material on the sphere: aSolidChecker, aNoise, aMarble,\n"
-         "                      aWood, anImage, aTurbulence, aDturbulence, aChecker\n"
-         "           P          the next course material on the plane\n"
-         "           arrows, WASD, left-drag   orbit the camera around its lookat point\n"
-         "           +/-, PageUp/PageDown, scroll   zoom\n"
-         "           R          reset the view to the scene file's camera\n"
-         "           F12        write -o FILE (default out.png) once every sample is in: the PNG\n"
-         "                      raytex render writes with the same view, size, --spp and --filter\n"
-         "           Esc, Q     quit\n"
-         "  --frames N         quit after N frames (accumulation restarts; for benchmarks)\n"
-         "  --stats            print frame times and material-switch times when quitting\n"
-         "  Saving the scene file reloads it; the title shows the materials, samples and ms/frame.\n"
-         "bench    Render SCENE --runs times (default 5), each a whole render from parse to PNG, and\n"
-         "         print the median time of each phase, the GPU time per frame (timestamps, one\n"
-         "         extra frame per run), Mpixel/s and Mray/s (primary + shadow rays). Writes the PNG\n"
-         "         only with -o.\n"
-         "  --runs N           renders to take medians over (1 to 1000)\n"
-         "  --json             print one JSON object (keys in docs/performance.md) instead of a table\n"
-         "devices  List the Vulkan devices and their indices.\n"
-         "\n"
-         "Exit codes: 0 success, 1 runtime failure (Vulkan, output file or stdout not written, out of\n"
-         "memory), 2 bad input (usage, scene, image file refused, an output that is one of the scene's\n"
-         "files). Rendering untrusted scenes: docs/security.md\n"
-         "Scene format: docs/scene-format.md; texture kinds: ") +
-         textureKindList() + "\n";
+  std::string out = "usage:\n";
+  for (const auto& c : kCommands) out += wrapped(synopsis(c.name, c.bit), 2, 100, 6);
+  out += "  raytex devices\n  raytex --help | --version\n\ncommands:\n";
+  for (const auto& c : kCommands) out += "  " + std::string(c.name) + "\n" + wrapped(c.summary, 4, 100, 4);
+  out += "  devices\n    List the Vulkan devices and their indices.\n\noptions (--name value or --name=value):\n";
+  for (const CliOption& o : kOptions) {
+    out += "  " + optionSignature(o) + "\n";
+    out += wrapped(std::string(o.help) + " [" + commandList(o.commands) + "]", 6, 100, 6);
+  }
+  out += "\n" + std::string(kViewKeys) + "\n" + kExitCodes;
+  out += "\nRendering untrusted scenes: docs/security.md\nScene format: docs/scene-format.md; texture kinds: ";
+  return out + textureKindList() + "\n";
 }
 
-bool parseCli(const std::vector<std::string>& args, CliArgs* out, std::string* error) {
-  *out = CliArgs{};
-  if (args.empty()) {
-    *error = "missing command (try raytex --help)";
-    return false;
+std::string optionReference() {
+  std::string out = "| option | value | commands | meaning |\n|---|---|---|---|\n";
+  for (const CliOption& o : kOptions) {
+    std::string names = o.alias ? "`" + std::string(o.alias) + "`, `" + o.name + "`" : "`" + std::string(o.name) + "`";
+    out += "| " + names + " | " + (o.value ? o.value : "") + " | " + commandList(o.commands) + " | " + o.help + " |\n";
   }
-  const std::string& command = args[0];
-  if (command == "--help" || command == "-h" || command == "help") {
-    out->command = CliCommand::Help;
-    return true;
-  }
-  if (command == "--version") {
-    out->command = CliCommand::Version;
-    return true;
-  }
-  if (command == "devices") {
-    out->command = CliCommand::Devices;
-    if (args.size() > 1) {
-      *error = "devices takes no arguments";
-      return false;
-    }
-    return true;
-  }
-  if (command != "render" && command != "view" && command != "bench") {
-    *error = "unknown command '" + command + "' (try raytex --help)";
-    return false;
-  }
-  out->command = command == "view"    ? CliCommand::View
-                 : command == "bench" ? CliCommand::Bench
-                                      : CliCommand::Render;
-  bool outputGiven = false;
-  RenderOptions& r = out->render;
-  for (size_t i = 1; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    auto value = [&](std::string* v) {
-      if (i + 1 >= args.size()) {
-        *error = a + " needs a value";
-        return false;
-      }
-      *v = args[++i];
-      return true;
-    };
-    std::string v;
-    if (a == "--help" || a == "-h") {
-      out->command = CliCommand::Help;
-      return true;
-    } else if (a == "-o" || a == "--output") {
-      if (!value(&r.output)) return false;
-      outputGiven = true;
-      if (r.output.empty()) {
-        *error = a + " needs a file name";
-        return false;
-      }
-    } else if (a == "--width") {
-      uint32_t n = 0;
-      if (!value(&v) || !parseUint(a, v, 1, kMaxImageSide, &n, error)) return false;
-      r.width = n;
-    } else if (a == "--height") {
-      uint32_t n = 0;
-      if (!value(&v) || !parseUint(a, v, 1, kMaxImageSide, &n, error)) return false;
-      r.height = n;
-    } else if (a == "--device") {
-      uint32_t d = 0;
-      if (!value(&v) || !parseUint(a, v, 0, 255, &d, error)) return false;
-      r.device = int(d);
-    } else if (a == "--spp") {
-      uint32_t n = 0;
-      if (!value(&v) || !parseUint(a, v, 1, 4096, &n, error)) return false;
-      r.samplesPerPixel = n;
-      uint32_t side = 1;
-      while (side * side < n) ++side;
-      if (side * side != n) {
-        *error = "--spp must be a square number (1, 4, 9, 16, ...), got " + v;
-        return false;
-      }
-    } else if (a == "--filter") {
-      if (!value(&v)) return false;
-      if (v != "point" && v != "box") {
-        *error = "--filter expects point or box, got '" + v + "'";
-        return false;
-      }
-      r.filter = v == "box";
-    } else if (a == "--frames" && out->command == CliCommand::View) {
-      if (!value(&v) || !parseUint(a, v, 1, 1000000, &r.frames, error)) return false;
-    } else if (a == "--runs" && out->command == CliCommand::Bench) {
-      if (!value(&v) || !parseUint(a, v, 1, 1000, &out->bench.runs, error)) return false;
-    } else if (a == "--json" && out->command == CliCommand::Bench) {
-      out->bench.json = true;
-    } else if (a == "--reference" && out->command != CliCommand::Render) {
-      *error = "--reference renders on the CPU to a file: use it with raytex render";
-      return false;
-    } else if (a == "--reference") {
-      r.reference = true;
-    } else if (a == "--max-image-mib") {
-      if (!value(&v) || !parseUint(a, v, 1, 1048576, &r.maxImageMiB, error)) return false;
-    } else if (a == "--allow-read") {
-      if (!value(&v)) return false;
-      if (v.empty()) {
-        *error = a + " needs a directory";
-        return false;
-      }
-      r.allowRead.push_back(v);
-    } else if (a == "--stats") {
-      r.stats = true;
-    } else if (a == "--validate") {
-      r.validate = true;
-    } else if (!a.empty() && a[0] == '-') {
-      *error = "unknown option '" + a + "' (try raytex --help)";
-      return false;
-    } else if (r.scene.empty()) {
-      r.scene = a;
-    } else {
-      *error = "more than one scene given ('" + r.scene + "', '" + a + "')";
-      return false;
-    }
-  }
-  if (r.scene.empty()) {
-    *error = command + " needs a scene file (e.g. raytex " + command + " scenes/textures.cfg)";
-    return false;
-  }
-  if (out->command == CliCommand::Bench && !outputGiven) r.output.clear();
-  const char* env = getenv("RAYTEX_VALIDATION");
-  if (env && std::string(env) == "1") r.validate = true;
-  return true;
-}
-
-bool resolveJob(const RenderOptions& options, const RenderSettings& s, uint32_t defaultSamplesPerPixel,
-                RenderJob* job, std::string* error) {
-  job->width = options.width.value_or(uint32_t(s.width.value_or(640)));
-  job->height = options.height.value_or(uint32_t(s.height.value_or(480)));
-  job->samplesPerPixel =
-      options.samplesPerPixel.value_or(s.samplesPerPixel ? uint32_t(*s.samplesPerPixel) : defaultSamplesPerPixel);
-  job->samplesPerSide = uint32_t(std::lround(std::sqrt(double(job->samplesPerPixel))));
-  job->filterBox = options.filter.value_or(s.filterBox.value_or(false));
-  if (uint64_t(job->width) * job->height > kMaxPixels) {
-    *error = std::to_string(job->width) + "x" + std::to_string(job->height) + " exceeds the limit of " +
-             std::to_string(kMaxPixels) + " pixels (8192x8192)";
-    return false;
-  }
-  return true;
+  out += "\n";
+  for (const NoEffect& n : kNoEffect)
+    out += "- `" + std::string(n.option) + "` with `" + n.when + "` is refused (exit 2): " + n.why + ".\n";
+  return out;
 }

@@ -1,4 +1,5 @@
-// Command-line parsing for the raytex binary. No Vulkan.
+// The raytex command line: one table of options (cli.cpp) that parsing, --help and the
+// reference in docs/cli.md all read. No Vulkan.
 #pragma once
 
 #include "scene.h"
@@ -13,7 +14,7 @@ enum class CliCommand { Help, Version, Render, View, Bench, Devices };
 
 struct RenderOptions {
   std::string scene;
-  std::string output = "out.png";
+  std::string output = "out.png";  // "-": standard output
   std::optional<uint32_t> width, height;  // flags; else the scene's render block; else 640x480
   int device = -1;        // --device N; -1: best available
   std::optional<uint32_t> samplesPerPixel;  // --spp: a square N*N, stratified, box filtered
@@ -50,11 +51,16 @@ struct RenderJob {
   bool filterBox = false;
 };
 
-// False with *error set when the size is over kMaxPixels.
-bool resolveJob(const RenderOptions& options, const RenderSettings& scene, uint32_t defaultSamplesPerPixel,
-                RenderJob* job, std::string* error);
+// Throws UsageError when the size is over kMaxPixels.
+RenderJob resolveJob(const RenderOptions& options, const RenderSettings& scene, uint32_t defaultSamplesPerPixel);
 
-// Parses argv; false with *error set (a one-line message) on bad usage.
-bool parseCli(const std::vector<std::string>& args, CliArgs* out, std::string* error);
+// Parses the arguments after the program name ("--name value" and "--name=value"). Throws
+// UsageError with a one-line message: an unknown option, a bad value, an option the command
+// does not take, or one that has no effect with the others given.
+CliArgs parseCli(const std::vector<std::string>& args);
 
+// `raytex --help`.
 std::string usageText();
+
+// The option table as Markdown: the reference section of docs/cli.md.
+std::string optionReference();

@@ -163,26 +163,21 @@ static VkDriverId driverId(VkPhysicalDevice physical) {
   return driver.driverID;
 }
 
-void createDevice(Device& d, const DeviceOptions& options) {
-  d.validation = options.validation && hasLayer(kValidationLayer);
-  if (options.validation && !d.validation)
-    fprintf(stderr, "warning: %s is not installed (apt-get install vulkan-validationlayers)\n",
-            kValidationLayer);
-  d.instance = createInstance(d.validation, options.instanceExtensions);
+// Validation messages go to debugCallback, which counts the errors.
+static void createMessenger(Device& d) {
+  VkDebugUtilsMessengerCreateInfoEXT info{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
+  info.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
+  info.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
+  info.pfnUserCallback = debugCallback;
+  info.pUserData = &d;
+  auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
+      vkGetInstanceProcAddr(d.instance, "vkCreateDebugUtilsMessengerEXT"));
+  if (create) VK_CHECK(create(d.instance, &info, nullptr, &d.messenger));
+}
 
-  if (d.validation) {
-    VkDebugUtilsMessengerCreateInfoEXT info{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
-    info.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT |
-                           VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
-    info.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
-                       VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
-    info.pfnUserCallback = debugCallback;
-    info.pUserData = &d;
-    auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
-        vkGetInstanceProcAddr(d.instance, "vkCreateDebugUtilsMessengerEXT"));
-    if (create) VK_CHECK(create(d.instance, &info, nullptr, &d.messenger));
-  }
-
+// The physical device and its queue family: --device N, else the best type with a compute
+// queue (that presents, for a window).
+static void choosePhysicalDevice(Device& d, const DeviceOptions& options) {
   std::vector<VkPhysicalDevice> devices = physicalDevices(d.instance);
   if (devices.empty()) throw VulkanError(kNoDeviceHint);
   if (options.deviceIndex >= 0) {
@@ -193,25 +188,26 @@ void createDevice(Device& d, const DeviceOptions& options) {
     if (!computeQueueFamily(d.instance, d.physical, options.presentSupport, &d.queueFamily))
       throw VulkanError("--device " + std::to_string(options.deviceIndex) + " has no compute queue" +
                         (options.presentSupport ? " that can present to this display" : ""));
-  } else {
-    int bestRank = -1;
-    for (VkPhysicalDevice candidate : devices) {
-      VkPhysicalDeviceProperties props;
-      vkGetPhysicalDeviceProperties(candidate, &props);
-      uint32_t family = 0;
-      if (!computeQueueFamily(d.instance, candidate, options.presentSupport, &family)) continue;
-      if (typeRank(props.deviceType) > bestRank) {
-        bestRank = typeRank(props.deviceType);
-        d.physical = candidate;
-        d.queueFamily = family;
-      }
-    }
-    if (!d.physical) throw VulkanError(kNoDeviceHint);
+    return;
   }
-  vkGetPhysicalDeviceProperties(d.physical, &d.properties);
-  vkGetPhysicalDeviceMemoryProperties(d.physical, &d.memory);
-  d.lavapipe = driverId(d.physical) == VK_DRIVER_ID_MESA_LLVMPIPE;
+  int bestRank = -1;
+  for (VkPhysicalDevice candidate : devices) {
+    VkPhysicalDeviceProperties props;
+    vkGetPhysicalDeviceProperties(candidate, &props);
+    uint32_t family = 0;
+    if (!computeQueueFamily(d.instance, candidate, options.presentSupport, &family)) continue;
+    if (typeRank(props.deviceType) > bestRank) {
+      bestRank = typeRank(props.deviceType);
+      d.physical = candidate;
+      d.queueFamily = family;
+    }
+  }
+  if (!d.physical) throw VulkanError(kNoDeviceHint);
+}
 
+// The logical device with one queue (and the swapchain extension, for a window), and a
+// command pool on it.
+static void createLogicalDevice(Device& d, bool present) {
   float priority = 1.0f;
   VkDeviceQueueCreateInfo queueInfo{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
   queueInfo.queueFamilyIndex = d.queueFamily;
@@ -221,17 +217,29 @@ void createDevice(Device& d, const DeviceOptions& options) {
   VkDeviceCreateInfo deviceInfo{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
   deviceInfo.queueCreateInfoCount = 1;
   deviceInfo.pQueueCreateInfos = &queueInfo;
-  if (options.presentSupport) {
+  if (present) {
     deviceInfo.enabledExtensionCount = 1;
     deviceInfo.ppEnabledExtensionNames = &swapchainExtension;
   }
   VK_CHECK(vkCreateDevice(d.physical, &deviceInfo, nullptr, &d.device));
   vkGetDeviceQueue(d.device, d.queueFamily, 0, &d.queue);
-
   VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
   poolInfo.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
   poolInfo.queueFamilyIndex = d.queueFamily;
   VK_CHECK(vkCreateCommandPool(d.device, &poolInfo, nullptr, &d.commandPool));
+}
+
+void createDevice(Device& d, const DeviceOptions& options) {
+  d.validation = options.validation && hasLayer(kValidationLayer);
+  if (options.validation && !d.validation)
+    fprintf(stderr, "warning: %s is not installed (apt-get install vulkan-validationlayers)\n", kValidationLayer);
+  d.instance = createInstance(d.validation, options.instanceExtensions);
+  if (d.validation) createMessenger(d);
+  choosePhysicalDevice(d, options);
+  vkGetPhysicalDeviceProperties(d.physical, &d.properties);
+  vkGetPhysicalDeviceMemoryProperties(d.physical, &d.memory);
+  d.lavapipe = driverId(d.physical) == VK_DRIVER_ID_MESA_LLVMPIPE;
+  createLogicalDevice(d, options.presentSupport != nullptr);
 }
 
 void destroyDevice(Device& d) {

@@ -1,16 +1,14 @@
 // Vulkan instance, physical-device choice, logical device and compute queue.
 #pragma once
 
+#include "error.h"
+
 #include <vulkan/vulkan.h>
 
 #include <stdexcept>
 #include <string>
 #include <vector>
 
-// A Vulkan call failed: a runtime failure (exit code 1), never an abort.
-struct VulkanError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
 
 const char* vkResultName(VkResult result);
 [[noreturn]] void throwVkError(const char* call, VkResult result, const char* file, int line);

@@ -1,10 +1,13 @@
 #include "output_file.h"
 
+#include <algorithm>
+#include <cctype>
 #include <cerrno>
+#include <cstdio>
+#include <filesystem>
 #include <csignal>
 #include <cstdlib>
 #include <cstring>
-#include <stdexcept>
 
 #include <fcntl.h>
 #include <limits.h>
@@ -15,7 +18,7 @@
 namespace {
 
 [[noreturn]] void fail(const std::string& path, int err) {
-  throw std::runtime_error("cannot write '" + path + "': " + strerror(err));
+  throw IoError("cannot write '" + path + "': " + strerror(err));
 }
 
 // The temporary file the signal handler removes: a fixed buffer, as a handler may not allocate.
@@ -109,7 +112,7 @@ std::string followLinks(const std::string& path) {
 void writeThrough(const std::string& path, const std::string& target, const std::vector<uint8_t>& bytes) {
   int fd = open(target.c_str(), O_WRONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
   if (fd < 0 && errno == ENXIO)
-    throw std::runtime_error("cannot write '" + path + "': no process is reading it");
+    throw IoError("cannot write '" + path + "': no process is reading it");
   if (fd < 0) fail(path, errno);
   int flags = fcntl(fd, F_GETFL);
   if (flags >= 0) fcntl(fd, F_SETFL, flags & ~O_NONBLOCK);
@@ -190,8 +193,29 @@ void writeFileAtomic(const std::string& path, const std::vector<uint8_t>& bytes)
 
 void writePngAtomic(const std::string& path, const ImageRGBA8& image) {
   std::vector<uint8_t> png = encodePng(image);
-  if (png.empty()) throw std::runtime_error("cannot encode PNG for '" + path + "'");
-  writeFileAtomic(path, png);
+  if (png.empty()) throw Error(ErrorKind::Internal, "cannot encode PNG for '" + path + "'");
+  writeOutput(path, png);
+}
+
+void writeOutput(const std::string& path, const std::vector<uint8_t>& bytes) {
+  if (path != "-") {
+    writeFileAtomic(path, bytes);
+    return;
+  }
+  // Errors show at the final flush (main.cpp), with their errno.
+  if (fwrite(bytes.data(), 1, bytes.size(), stdout) != bytes.size())
+    throw IoError(std::string("cannot write to standard output: ") + strerror(errno));
+}
+
+void checkOutput(const std::string& output, const Scene& scene) {
+  if (output.empty() || output == "-") return;
+  if (std::string clash = outputClash(output, scene); !clash.empty()) throw UsageError(clash);
+  struct stat st;
+  if (stat(output.c_str(), &st) == 0 && !S_ISREG(st.st_mode) && !S_ISDIR(st.st_mode)) return;  // written through
+  std::string ext = std::filesystem::path(output).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  if (ext != ".png")
+    throw UsageError("cannot write '" + output + "': raytex writes PNG files (.png), or - for standard output");
 }
 
 std::string outputClash(const std::string& output, const Scene& scene) {

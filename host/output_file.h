@@ -19,10 +19,14 @@
 #include <string>
 #include <vector>
 
-// Writes `bytes` to `path` as described above. Throws std::runtime_error naming the path.
+// Writes `bytes` to `path` as described above. Throws IoError naming the path.
 void writeFileAtomic(const std::string& path, const std::vector<uint8_t>& bytes);
 
-// Encodes `image` as PNG (encodePng) and writes it with writeFileAtomic.
+// Writes `bytes` to `path` with writeFileAtomic, or to standard output when `path` is "-".
+// Throws IoError.
+void writeOutput(const std::string& path, const std::vector<uint8_t>& bytes);
+
+// Encodes `image` as PNG (encodePng) and writes it with writeOutput.
 void writePngAtomic(const std::string& path, const ImageRGBA8& image);
 
 // The name of the temporary file for `path`: "NAME.tmp-XXXXXX" in the same directory, with
@@ -33,3 +37,8 @@ std::string tempTemplate(const std::string& path, size_t nameMax);
 // ("refusing to write 'x.cfg': it is the scene file"). Compares device and inode with the scene
 // file, every included file and every image the scene's materials name.
 std::string outputClash(const std::string& output, const Scene& scene);
+
+// Throws UsageError when raytex may not write `output` for this scene: one of its files
+// (outputClash), or a regular file whose name does not end in .png. Devices, FIFOs, "-"
+// (standard output) and "" (no output) pass.
+void checkOutput(const std::string& output, const Scene& scene);

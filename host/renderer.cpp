@@ -182,8 +182,8 @@ void createOutput(Renderer& r, uint32_t width, uint32_t height) {
   r.display = createImage(r.device, r.accumulate ? width : 1, r.accumulate ? height : 1, 1, VK_FORMAT_R32_UINT,
                           VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, false);
   // A storage buffer in host-visible memory, not an image: the host reads it in place, and
-  // lavapipe stores one vec4 per lane instead of one image channel per lane (the default
-  // scene's kernel: 386 -> 374 x86 instructions per pixel, bench/instructions.sh).
+  // lavapipe stores one vec4 per lane instead of one image channel per lane (docs/performance.md,
+  // "Where the kernel's time goes").
   r.bandRows = rows;
   r.pixels = createBuffer(r.device, VkDeviceSize(width) * r.bandRows * 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
   VkCommandBuffer cmd = beginCommands(r.device);
@@ -208,33 +208,26 @@ void createPlaceholderImage(Renderer& r) {
   uploadImageLayers(r.device, r.placeholder, magenta, sizeof(magenta));
 }
 
-}  // namespace
-
-void createRenderer(Renderer& r, const DeviceOptions& options) {
-  createDevice(r.device, options);
-  // The largest uniform block the kernel declares (common.h): 64 KiB is common, 16 KiB the minimum.
+// Throws VulkanError (the device destroyed) when its uniform buffers cannot hold the largest
+// block the kernel declares (common.h): 64 KiB is common, 16 KiB the minimum.
+void checkUniformRange(Device& device) {
   const size_t largestBlock = std::max({sizeof(gpu::Sphere) * MAX_UNIFORM_SPHERES, sizeof(gpu::Plane) * MAX_PLANES,
                                         sizeof(gpu::Material) * MAX_MATERIALS, sizeof(gpu::Light) * MAX_LIGHTS,
                                         sizeof(gpu::BvhNode) * MAX_UNIFORM_TREE_NODES});
-  const uint32_t maxRange = r.device.properties.limits.maxUniformBufferRange;
-  if (maxRange < largestBlock) {
-    std::string name = r.device.properties.deviceName;
-    destroyDevice(r.device);
-    throw VulkanError(name + ": uniform buffers of at most " + std::to_string(maxRange) + " bytes; raytex needs " +
-                      std::to_string(largestBlock));
-  }
-  r.setLayout = createTraceSetLayout(r.device);
-  createPlaceholderImage(r);
-  r.status = createBuffer(r.device, sizeof(uint32_t) * STATUS_WORDS, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-  const uint32_t clear[STATUS_WORDS] = {};
-  writeBuffer(r.status, clear, sizeof(clear));
-  writeTileOrder(r, {TILE_ORDER_NONE});
+  const uint32_t maxRange = device.properties.limits.maxUniformBufferRange;
+  if (maxRange >= largestBlock) return;
+  std::string name = device.properties.deviceName;
+  destroyDevice(device);
+  throw VulkanError(name + ": uniform buffers of at most " + std::to_string(maxRange) + " bytes; raytex needs " +
+                    std::to_string(largestBlock));
+}
 
+// The pipeline layout of the one descriptor set, and that set.
+void createDescriptorSet(Renderer& r) {
   VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
   layoutInfo.setLayoutCount = 1;
   layoutInfo.pSetLayouts = &r.setLayout;
   VK_CHECK(vkCreatePipelineLayout(r.device.device, &layoutInfo, nullptr, &r.pipelineLayout));
-
   const VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1},
                                         {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 7},
                                         {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, 1},
@@ -250,12 +243,14 @@ void createRenderer(Renderer& r, const DeviceOptions& options) {
   setInfo.descriptorSetCount = 1;
   setInfo.pSetLayouts = &r.setLayout;
   VK_CHECK(vkAllocateDescriptorSets(r.device.device, &setInfo, &r.descriptorSet));
+}
 
-  // Bilinear, repeating: u wraps around the sphere and tiles repeat on planes (the kernel
-  // clamps the coordinate of wrap = clamp images itself, kinds/image.glsl). Trilinear between
-  // mip levels: the point kernel reads level 0 only (textureLod 0), the filtered kernel picks a
-  // level from the sample's footprint (kinds/image.glsl, imageBox). No maxLod limit: each
-  // view's level count is the limit. One sampler for every element of BINDING_IMAGES.
+// Bilinear, repeating: u wraps around the sphere and tiles repeat on planes (the kernel clamps
+// the coordinate of wrap = clamp images itself, kinds/image.glsl). Trilinear between mip
+// levels: the point kernel reads level 0 only (textureLod 0), the filtered kernel picks a level
+// from the sample's footprint (kinds/image.glsl, imageBox). No maxLod limit: each view's level
+// count is the limit. One sampler for every element of BINDING_IMAGES.
+void createSampler(Renderer& r) {
   VkSamplerCreateInfo samplerInfo{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
   samplerInfo.magFilter = VK_FILTER_LINEAR;
   samplerInfo.minFilter = VK_FILTER_LINEAR;
@@ -265,18 +260,36 @@ void createRenderer(Renderer& r, const DeviceOptions& options) {
   samplerInfo.addressModeW = VK_SAMPLER_ADDRESS_MODE_REPEAT;
   samplerInfo.maxLod = VK_LOD_CLAMP_NONE;
   VK_CHECK(vkCreateSampler(r.device.device, &samplerInfo, nullptr, &r.sampler));
+}
 
-  // GPU frame times, where the queue supports timestamps.
+// GPU frame times, where the queue supports timestamps.
+void createTimestamps(Renderer& r) {
   uint32_t familyCount = 0;
   vkGetPhysicalDeviceQueueFamilyProperties(r.device.physical, &familyCount, nullptr);
   std::vector<VkQueueFamilyProperties> families(familyCount);
   vkGetPhysicalDeviceQueueFamilyProperties(r.device.physical, &familyCount, families.data());
-  if (families[r.device.queueFamily].timestampValidBits > 0 && r.device.properties.limits.timestampPeriod > 0.0f) {
-    VkQueryPoolCreateInfo queryInfo{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
-    queryInfo.queryType = VK_QUERY_TYPE_TIMESTAMP;
-    queryInfo.queryCount = 2;
-    VK_CHECK(vkCreateQueryPool(r.device.device, &queryInfo, nullptr, &r.timestamps));
-  }
+  if (families[r.device.queueFamily].timestampValidBits == 0 || r.device.properties.limits.timestampPeriod <= 0.0f)
+    return;
+  VkQueryPoolCreateInfo queryInfo{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
+  queryInfo.queryType = VK_QUERY_TYPE_TIMESTAMP;
+  queryInfo.queryCount = 2;
+  VK_CHECK(vkCreateQueryPool(r.device.device, &queryInfo, nullptr, &r.timestamps));
+}
+
+}  // namespace
+
+void createRenderer(Renderer& r, const DeviceOptions& options) {
+  createDevice(r.device, options);
+  checkUniformRange(r.device);
+  r.setLayout = createTraceSetLayout(r.device);
+  createPlaceholderImage(r);
+  r.status = createBuffer(r.device, sizeof(uint32_t) * STATUS_WORDS, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+  const uint32_t clear[STATUS_WORDS] = {};
+  writeBuffer(r.status, clear, sizeof(clear));
+  writeTileOrder(r, {TILE_ORDER_NONE});
+  createDescriptorSet(r);
+  createSampler(r);
+  createTimestamps(r);
 }
 
 void destroyRenderer(Renderer& r) {
@@ -305,7 +318,7 @@ void uploadScene(Renderer& r, const GpuScene& s) {
   // Checked before anything is replaced: the viewer keeps its last scene when this throws.
   const VkPhysicalDeviceLimits& limits = r.device.properties.limits;
   std::string over = imagesOverDeviceLimits(s.images, limits.maxImageDimension2D);
-  if (!over.empty()) throw std::runtime_error(over);
+  if (!over.empty()) throw VulkanError(over);
   VK_CHECK(vkDeviceWaitIdle(r.device.device));
   // Whole blocks (buildGpuScene keeps to the MAX_* counts); the noise table even when unused.
   replaceUniformBuffer(r, r.frame, &s.frame, 1);

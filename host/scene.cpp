@@ -2,11 +2,6 @@
 
 #include <algorithm>
 
-std::string formatLoc(const FileLoc& loc, const std::string& message) {
-  if (loc.line <= 0) return loc.file + ": " + message;  // about the whole file (cannot open it)
-  return loc.file + ":" + std::to_string(loc.line) + ":" + std::to_string(loc.column) + ": " + message;
-}
-
 Material defaultMaterial() {
   Material m;
   m.name = "default";

@@ -3,27 +3,14 @@
 // CPU by the reference code in mapping.cpp / texture.cpp.
 #pragma once
 
+#include "error.h"
+
 #include <glm/vec3.hpp>
 
 #include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
-
-struct FileLoc {
-  std::string file;
-  int line = 0;    // 1-based
-  int column = 0;  // 1-based
-};
-
-// "file:line:col: message", the form every scene error takes.
-std::string formatLoc(const FileLoc& loc, const std::string& message);
-
-struct SceneError : std::runtime_error {
-  FileLoc loc;
-  SceneError(const FileLoc& where, const std::string& message)
-      : std::runtime_error(formatLoc(where, message)), loc(where) {}
-};
 
 // Values match TEX_* in shaders/common.h (checked in texture_kinds.cpp); each kind's row is in
 // texture_kinds.cpp.

@@ -2,7 +2,6 @@
 
 #include "scene_limits.h"
 
-#include "exit_status.h"
 #include "gpu_scene.h"
 #include "image_io.h"
 #include "median.h"
@@ -20,7 +19,6 @@
 #include <cstdio>
 #include <filesystem>
 #include <optional>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -194,17 +192,14 @@ void reloadIfChanged(ViewerState& state, const std::string& path, const ReadPoli
     if (limits.lavapipe) checkLoopLimit(scene);
     GpuScene gpuScene = buildGpuScene(scene, 1, 1, limits.pack);
     std::string over = imagesOverDeviceLimits(gpuScene.images, limits.maxImageDimension2D);
-    if (!over.empty()) throw std::runtime_error(over);
+    if (!over.empty()) throw VulkanError(over);
     state.scene = std::move(scene);
     state.reloaded = std::move(gpuScene);
     state.orbit = orbitOf(state.scene.camera);
     state.dirty = true;
     state.message = "reloaded";
-  } catch (const SceneError& e) {
-    fprintf(stderr, "%s\n", e.what());
-    state.message = "scene error, see the terminal";
-  } catch (const std::runtime_error& e) {
-    fprintf(stderr, "raytex: %s\n", e.what());
+  } catch (const Error& e) {
+    fprintf(stderr, "%s\n", errorLine(e).c_str());
     state.message = "scene error, see the terminal";
   }
 }
@@ -222,7 +217,7 @@ void saveScreenshot(ViewerState& state, Renderer& renderer, const std::string& o
     readbackFrame(renderer);
     try {
       writePngAtomic(output, encodeSrgb(framePixels(renderer), int(renderer.width), int(renderer.height)));
-    } catch (const std::runtime_error& e) {
+    } catch (const Error& e) {
       error = e.what();
     }
   }
@@ -328,161 +323,189 @@ struct FrameStats {
   }
 };
 
-}  // namespace
-
-int runViewer(const RenderOptions& options) {
+// Everything the frame loop works on.
+struct Viewer {
   ViewerState state;
-  try {
-    state.scene = parseSceneFile(options.scene, ReadPolicy{options.allowRead});
-  } catch (const SceneError& e) {
-    fprintf(stderr, "%s\n", e.what());
-    return 2;
-  }
-  if (std::string clash = outputClash(options.output, state.scene); !clash.empty()) {  // F12 writes -o
-    fprintf(stderr, "raytex: %s\n", clash.c_str());
-    return 2;
-  }
   RenderJob job;
-  std::string error;
-  if (!resolveJob(options, state.scene.render, kViewerSamplesPerPixel, &job, &error) ||
-      !initWindowSystem(&error)) {
-    fprintf(stderr, "raytex: %s\n", error.c_str());
-    return error.find("exceeds") != std::string::npos ? 2 : 1;
-  }
   PackOptions pack;  // every material, so that a key can switch to it
-  pack.mipmaps = job.filterBox;  // mip chains only for the filtered kernel
-  pack.allMaterials = true;
-  pack.maxImageMiB = options.maxImageMiB;
+  Window window;
+  Renderer renderer;
+  FrameStats stats;
+  GpuScene gpuScene;
+  uint32_t target = 1;   // samples per pixel to accumulate
+  uint32_t samples = 0;  // accumulated in the image on screen
+  std::vector<std::filesystem::file_time_type> fileTimes;
+  Clock::time_point lastTitle, frameStart;
+};
+
+// The scene, the job and how to pack it: bad input fails before any window opens.
+void loadScene(Viewer& v, const RenderOptions& options) {
+  ViewerState& state = v.state;
+  state.scene = parseSceneFile(options.scene, ReadPolicy{options.allowRead});
+  checkOutput(options.output, state.scene);  // F12 writes -o
+  v.job = resolveJob(options, state.scene.render, kViewerSamplesPerPixel);
+  v.target = v.job.samplesPerSide * v.job.samplesPerSide;
+  v.pack.mipmaps = v.job.filterBox;  // mip chains only for the filtered kernel
+  v.pack.allMaterials = true;
+  v.pack.maxImageMiB = options.maxImageMiB;
   state.orbit = orbitOf(state.scene.camera);
   for (size_t i = 0; i < 8 && !state.scene.planes.empty(); ++i)
     if (materialIndex(state.scene, kCourseMaterials[i]) == state.scene.planes[0].material) state.planeMaterial = int(i);
+  v.fileTimes = fileTimes(state.scene);
+}
 
-  Window window;
-  Renderer renderer;
-  renderer.accumulate = true;
-  FrameStats stats;
-  int rc = 0;
-  try {
-    window.window = openWindow(int(job.width), int(job.height), "raytex");
-    glfwSetWindowUserPointer(window.window, &state);
-    glfwSetKeyCallback(window.window, onKey);
-    glfwSetMouseButtonCallback(window.window, onMouseButton);
-    glfwSetCursorPosCallback(window.window, onCursor);
-    glfwSetScrollCallback(window.window, onScroll);
-    glfwSetWindowRefreshCallback(window.window, [](GLFWwindow* w) {
-      static_cast<ViewerState*>(glfwGetWindowUserPointer(w))->refresh = true;
-    });
-    DeviceOptions deviceOptions;
-    deviceOptions.deviceIndex = options.device;
-    deviceOptions.validation = options.validate;
-    deviceOptions.instanceExtensions = windowInstanceExtensions();
-    deviceOptions.presentSupport = windowPresentSupport;
-    createRenderer(renderer, deviceOptions);
-    if (renderer.device.lavapipe) checkLoopLimit(state.scene);
-    createSwapchain(window, renderer.device);
-    renderer.displayBgra = windowBgra(window);
+// The window with its input callbacks, the device that presents to it, and its swapchain.
+void openViewer(Viewer& v, const RenderOptions& options) {
+  v.window.window = openWindow(int(v.job.width), int(v.job.height), "raytex");
+  GLFWwindow* w = v.window.window;
+  glfwSetWindowUserPointer(w, &v.state);
+  glfwSetKeyCallback(w, onKey);
+  glfwSetMouseButtonCallback(w, onMouseButton);
+  glfwSetCursorPosCallback(w, onCursor);
+  glfwSetScrollCallback(w, onScroll);
+  glfwSetWindowRefreshCallback(w, [](GLFWwindow* window) {
+    static_cast<ViewerState*>(glfwGetWindowUserPointer(window))->refresh = true;
+  });
+  DeviceOptions device;
+  device.deviceIndex = options.device;
+  device.validation = options.validate;
+  device.instanceExtensions = windowInstanceExtensions();
+  device.presentSupport = windowPresentSupport;
+  v.renderer.accumulate = true;
+  createRenderer(v.renderer, device);
+  if (v.renderer.device.lavapipe) checkLoopLimit(v.state.scene);
+  createSwapchain(v.window, v.renderer.device);
+  v.renderer.displayBgra = windowBgra(v.window);
+}
 
-    const uint32_t target = job.samplesPerSide * job.samplesPerSide;
-    uint32_t samples = 0;  // accumulated in the image on screen
-    GpuScene gpuScene;
-    auto lastTitle = Clock::now() - std::chrono::seconds(1);
-    auto frameStart = Clock::now();
-    std::vector<std::filesystem::file_time_type> times = fileTimes(state.scene);
-    while (!glfwWindowShouldClose(window.window)) {
-      bool busy = samples < target || state.dirty || state.cameraMoved || state.refresh || state.screenshot;
-      KernelKey warm;
-      if (busy || options.frames) {
-        glfwPollEvents();
-      } else if (nextPipelineToWarm(state, renderer, job, gpuScene, &warm)) {
-        // Idle: compile what a key may need next, so that the switch shows on the next frame.
-        warmPipeline(renderer, warm);
-        glfwPollEvents();
-      } else {
-        glfwWaitEventsTimeout(0.25);  // wakes for the reload poll
-      }
-      VkExtent2D size = framebufferSize(window);
-      if (size.width == 0 || size.height == 0) {  // minimised
-        glfwWaitEvents();
-        continue;
-      }
-      // Images are decoded only with the scene (start, reload) or when an object's material is
-      // not packed (over MAX_MATERIALS); a new size re-packs the camera alone.
-      bool unpacked = false;
-      for (const Sphere& o : state.scene.spheres) unpacked = unpacked || !gpuScene.materialIndex.count(o.material);
-      for (const Plane& o : state.scene.planes) unpacked = unpacked || !gpuScene.materialIndex.count(o.material);
-      if (size.width != renderer.width || size.height != renderer.height || unpacked) state.dirty = true;
-      if (state.dirty) {  // the size, the scene file or the packed materials changed: everything
-        if (state.reloaded) {
-          gpuScene = std::move(*state.reloaded);
-          state.reloaded.reset();
-        } else if (unpacked) {
-          gpuScene = buildGpuScene(state.scene, size.width, size.height, pack);
-        }
-        packCamera(gpuScene, state.scene, size.width, size.height);
-        uploadScene(renderer, gpuScene);
-        prepareViewerKernels(renderer, gpuScene, state.scene, job);
-        state.dirty = state.cameraMoved = false;
-        samples = 0;
-      } else if (state.cameraMoved) {  // camera-relative positions and material indices
-        packCamera(gpuScene, state.scene, size.width, size.height);
-        updateSceneBuffers(renderer, gpuScene);
-        prepareViewerKernels(renderer, gpuScene, state.scene, job);
-        state.cameraMoved = false;
-        samples = 0;
-      }
-      if (options.frames && samples == target) samples = 0;  // --frames: keep rendering
-      bool render = samples < target;
-      if (render) {
-        renderSample(renderer, samples++);
-        stats.gpuMs.push_back(renderer.lastFrameMs);
-      }
-      if (state.screenshot && samples == target) {
-        // Every sample in: bit-identical to raytex render's image with these settings.
-        state.screenshot = false;
-        const std::string settings = std::to_string(target) + " spp, filter " + (job.filterBox ? "box" : "point");
-        saveScreenshot(state, renderer, options.output, settings.c_str());
-      }
-      if (render || state.refresh) {
-        state.refresh = false;
-        auto presentStart = Clock::now();
-        if (!presentPixels(window, renderer.device, renderer.display)) {
-          createSwapchain(window, renderer.device);
-          renderer.displayBgra = windowBgra(window);
-        }
-        auto now = Clock::now();
-        if (state.switchedAt) stats.switchMs.push_back(msBetween(*state.switchedAt, now));
-        state.switchedAt.reset();
-        stats.presentMs.push_back(msBetween(presentStart, now));
-        stats.frameMs.push_back(msBetween(frameStart, now));
-        frameStart = now;
-      } else {
-        frameStart = Clock::now();
-      }
-      if (options.frames && stats.frameMs.size() >= options.frames) break;
-      auto now = Clock::now();
-      if (now - lastTitle > std::chrono::milliseconds(250)) {  // also the reload poll
-        const VkPhysicalDeviceLimits& device = renderer.device.properties.limits;
-        reloadIfChanged(state, options.scene, ReadPolicy{options.allowRead}, times,
-                        {pack, device.maxImageDimension2D, renderer.device.lavapipe});
-        double frameMs = stats.frameMs.empty() ? 0.0 : stats.frameMs.back();
-        glfwSetWindowTitle(window.window, title(state, samples, target, frameMs, renderer.lastFrameMs).c_str());
-        lastTitle = now;
-      }
-    }
-    if (options.stats || options.frames) stats.print(renderer.width, renderer.height);
-    if (renderer.device.validationErrors > 0) {
-      fprintf(stderr, "raytex: %d Vulkan validation error(s)\n", renderer.device.validationErrors);
-      rc = 1;
-    }
-  } catch (const SceneError& e) {
-    fprintf(stderr, "%s\n", e.what());
-    rc = 2;
-  } catch (const std::exception& e) {
-    fprintf(stderr, "raytex: %s\n", exceptionText(e).c_str());
-    rc = 1;
+// Handles input; waits when there is nothing to render, compiling meanwhile what a key may need
+// next so that the switch shows on the next frame.
+void waitForWork(Viewer& v, bool keepRendering) {
+  const ViewerState& s = v.state;
+  const bool busy = v.samples < v.target || s.dirty || s.cameraMoved || s.refresh || s.screenshot;
+  KernelKey warm;
+  if (busy || keepRendering) {
+    glfwPollEvents();
+  } else if (nextPipelineToWarm(s, v.renderer, v.job, v.gpuScene, &warm)) {
+    warmPipeline(v.renderer, warm);
+    glfwPollEvents();
+  } else {
+    glfwWaitEventsTimeout(0.25);  // wakes for the reload poll
   }
-  destroyWindow(window, renderer.device);
-  destroyRenderer(renderer);
+}
+
+// Re-packs and uploads what changed: everything for a new size, scene file or unpacked
+// material; camera-relative positions and material indices for a camera move or a key.
+void updateScene(Viewer& v, VkExtent2D size) {
+  ViewerState& state = v.state;
+  // Images are decoded only with the scene (start, reload) or when an object's material is not
+  // packed (over MAX_MATERIALS); a new size re-packs the camera alone.
+  bool unpacked = false;
+  for (const Sphere& o : state.scene.spheres) unpacked = unpacked || !v.gpuScene.materialIndex.count(o.material);
+  for (const Plane& o : state.scene.planes) unpacked = unpacked || !v.gpuScene.materialIndex.count(o.material);
+  if (size.width != v.renderer.width || size.height != v.renderer.height || unpacked) state.dirty = true;
+  if (!state.dirty && !state.cameraMoved) return;
+  if (state.dirty && state.reloaded) {
+    v.gpuScene = std::move(*state.reloaded);
+    state.reloaded.reset();
+  } else if (state.dirty && unpacked) {
+    v.gpuScene = buildGpuScene(state.scene, size.width, size.height, v.pack);
+  }
+  packCamera(v.gpuScene, state.scene, size.width, size.height);
+  if (state.dirty)
+    uploadScene(v.renderer, v.gpuScene);
+  else
+    updateSceneBuffers(v.renderer, v.gpuScene);
+  prepareViewerKernels(v.renderer, v.gpuScene, state.scene, v.job);
+  state.dirty = state.cameraMoved = false;
+  v.samples = 0;
+}
+
+// Adds a sample while the image lacks some, writes the F12 screenshot once it has all, and
+// presents the image when it changed or the window was exposed.
+void renderAndShow(Viewer& v, const RenderOptions& options) {
+  ViewerState& state = v.state;
+  if (options.frames && v.samples == v.target) v.samples = 0;  // --frames: keep rendering
+  const bool render = v.samples < v.target;
+  if (render) {
+    renderSample(v.renderer, v.samples++);
+    v.stats.gpuMs.push_back(v.renderer.lastFrameMs);
+  }
+  if (state.screenshot && v.samples == v.target) {
+    // Every sample in: bit-identical to raytex render's image with these settings.
+    state.screenshot = false;
+    const std::string settings = std::to_string(v.target) + " spp, filter " + (v.job.filterBox ? "box" : "point");
+    saveScreenshot(state, v.renderer, options.output, settings.c_str());
+  }
+  if (!render && !state.refresh) {
+    v.frameStart = Clock::now();
+    return;
+  }
+  state.refresh = false;
+  const Clock::time_point presentStart = Clock::now();
+  if (!presentPixels(v.window, v.renderer.device, v.renderer.display)) {
+    createSwapchain(v.window, v.renderer.device);
+    v.renderer.displayBgra = windowBgra(v.window);
+  }
+  const Clock::time_point now = Clock::now();
+  if (state.switchedAt) v.stats.switchMs.push_back(msBetween(*state.switchedAt, now));
+  state.switchedAt.reset();
+  v.stats.presentMs.push_back(msBetween(presentStart, now));
+  v.stats.frameMs.push_back(msBetween(v.frameStart, now));
+  v.frameStart = now;
+}
+
+// Four times a second: reloads the scene if one of its files changed, and updates the title.
+void pollAndTitle(Viewer& v, const RenderOptions& options) {
+  const Clock::time_point now = Clock::now();
+  if (now - v.lastTitle <= std::chrono::milliseconds(250)) return;
+  const VkPhysicalDeviceLimits& device = v.renderer.device.properties.limits;
+  reloadIfChanged(v.state, options.scene, ReadPolicy{options.allowRead}, v.fileTimes,
+                  {v.pack, device.maxImageDimension2D, v.renderer.device.lavapipe});
+  const double frameMs = v.stats.frameMs.empty() ? 0.0 : v.stats.frameMs.back();
+  glfwSetWindowTitle(v.window.window, title(v.state, v.samples, v.target, frameMs, v.renderer.lastFrameMs).c_str());
+  v.lastTitle = now;
+}
+
+// The frame loop, until the window closes (or --frames frames are shown).
+void runFrames(Viewer& v, const RenderOptions& options) {
+  v.lastTitle = Clock::now() - std::chrono::seconds(1);
+  v.frameStart = Clock::now();
+  while (!glfwWindowShouldClose(v.window.window)) {
+    waitForWork(v, options.frames != 0);
+    const VkExtent2D size = framebufferSize(v.window);
+    if (size.width == 0 || size.height == 0) {  // minimised
+      glfwWaitEvents();
+      continue;
+    }
+    updateScene(v, size);
+    renderAndShow(v, options);
+    if (options.frames && v.stats.frameMs.size() >= options.frames) break;
+    pollAndTitle(v, options);
+  }
+  if (options.stats || options.frames) v.stats.print(v.renderer.width, v.renderer.height);
+  if (v.renderer.device.validationErrors > 0)
+    throw VulkanError(std::to_string(v.renderer.device.validationErrors) + " Vulkan validation error(s)");
+}
+
+void closeViewer(Viewer& v) {
+  destroyWindow(v.window, v.renderer.device);
+  destroyRenderer(v.renderer);
   shutdownWindowSystem();
-  return rc;
+}
+
+}  // namespace
+
+void runViewer(const RenderOptions& options) {
+  Viewer v;
+  loadScene(v, options);
+  initWindowSystem();
+  try {
+    openViewer(v, options);
+    runFrames(v, options);
+  } catch (...) {
+    closeViewer(v);
+    throw;
+  }
+  closeViewer(v);
 }

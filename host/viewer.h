@@ -4,6 +4,6 @@
 
 #include "cli.h"
 
-// Runs until the window closes. Exit code as for render: 0, 1 runtime (no display), 2 input.
-// The keys are listed in cli.cpp's usage text and the README.
-int runViewer(const RenderOptions& options);
+// Runs until the window closes. Throws an Error (error.h): VulkanError with no display. The
+// keys are listed in cli.cpp's usage text and the README.
+void runViewer(const RenderOptions& options);

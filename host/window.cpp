@@ -13,8 +13,8 @@ void destroySwapchain(Window& w, const Device& d) {
   w.images.clear();
 }
 
-// An sRGB swapchain format that can be a blit destination: the blit from the linear float
-// image then encodes sRGB like the PNG output does.
+// An 8-bit sRGB swapchain format: the kernel's display image holds sRGB-encoded bytes, which a
+// copy stores as they are.
 VkSurfaceFormatKHR chooseFormat(const Device& d, VkSurfaceKHR surface) {
   uint32_t count = 0;
   VK_CHECK(vkGetPhysicalDeviceSurfaceFormatsKHR(d.physical, surface, &count, nullptr));
@@ -31,18 +31,14 @@ VkSurfaceFormatKHR chooseFormat(const Device& d, VkSurfaceKHR surface) {
 
 }  // namespace
 
-bool initWindowSystem(std::string* error) {
-  if (!glfwInit()) {
-    *error = "no display to open a window on (is DISPLAY set?); render to a file instead: "
-             "raytex render SCENE -o out.png";
-    return false;
-  }
+void initWindowSystem() {
+  if (!glfwInit())
+    throw VulkanError("no display to open a window on (is DISPLAY set?); render to a file instead: "
+                      "raytex render SCENE -o out.png");
   if (!glfwVulkanSupported()) {
     glfwTerminate();
-    *error = "GLFW found no Vulkan loader; install libvulkan1, or use raytex render SCENE -o out.png";
-    return false;
+    throw VulkanError("GLFW found no Vulkan loader; install libvulkan1, or use raytex render SCENE -o out.png");
   }
-  return true;
 }
 
 void shutdownWindowSystem() { glfwTerminate(); }
@@ -139,7 +135,7 @@ bool presentPixels(Window& w, const Device& d, const Image& pixels) {
   if (result == VK_ERROR_OUT_OF_DATE_KHR) return false;
   if (result != VK_SUBOPTIMAL_KHR) VK_CHECK(result);
 
-  // A plain copy: on lavapipe a blit converting the float image took most of the present time.
+  // A plain copy of the kernel's 8-bit display image: no conversion at present time.
   // Sizes differ only for the frame after a resize, before the swapchain follows it.
   VkCommandBuffer cmd = beginCommands(d);
   VkImage target = w.images[index];

@@ -18,11 +18,12 @@ struct Window {
   VkExtent2D extent{0, 0};
   std::vector<VkImage> images;
   VkSemaphore acquired = VK_NULL_HANDLE;      // the swapchain image is ready to be written
-  VkSemaphore presentReady = VK_NULL_HANDLE;  // the blit is done
+  VkSemaphore presentReady = VK_NULL_HANDLE;  // the copy is done
 };
 
-// Starts GLFW; false with *error set when there is no display to open a window on.
-bool initWindowSystem(std::string* error);
+// Starts GLFW. Throws VulkanError when there is no display to open a window on, or GLFW finds
+// no Vulkan loader.
+void initWindowSystem();
 void shutdownWindowSystem();
 
 // What the Vulkan instance and device need for windows (pass to DeviceOptions).

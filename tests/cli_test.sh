@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
 # End-to-end checks of the raytex command line: exit codes (0 ok, 1 runtime, 2 bad
-# input), one-line errors, file:line:col for scenes, atomic output.
+# input; docs/cli.md), one-line errors, file:line:col for scenes, atomic output.
 # Usage: cli_test.sh RAYTEX SOURCE_DIR
 set -u
 source "$(dirname "$0")/cli_checks.sh"
 
-expect help 0 'usage: raytex render SCENE' -- "$raytex" --help
+expect help 0 '^  raytex render SCENE \[-o FILE\]' -- "$raytex" --help
 expect help-kinds 0 'texture kinds: image, checker, solid_checker, [a-z_, ]+ or [a-z_]+$' -- "$raytex" --help
 expect no-args 2 '^raytex: missing command' -- "$raytex"
 expect unknown-command 2 "unknown command 'draw'" -- "$raytex" draw x
@@ -13,6 +13,11 @@ expect no-scene 2 'render needs a scene file' -- "$raytex" render
 expect bad-width 2 '--width expects an integer from 1 to 16384' -- "$raytex" render s.cfg --width 0
 expect bad-option 2 "unknown option '--fast'" -- "$raytex" render s.cfg --fast
 expect missing-scene 2 "^$tmp/none.cfg: cannot open" -- "$raytex" render "$tmp/none.cfg"
+
+# The scenes and images of the course, copied: the variants below are written beside them.
+mkdir -p "$tmp/course"
+cp -r "$src/scenes" "$src/textures" "$tmp/course/"
+course=$tmp/course/scenes
 
 printf 'sphere {\n  center = (0, 0, 0);\n  radiuss = 2;\n}\n' >"$tmp/typo.cfg"
 expect scene-error 2 "^$tmp/typo.cfg:3:3: " -- "$raytex" render "$tmp/typo.cfg" -o "$tmp/typo.png"
@@ -92,39 +97,68 @@ expect render 0 '^device [0-9.]+ ms \| parse [0-9.]+ ms .* encode [0-9.]+ ms \| 
   "$raytex" render "$src/scenes/textures.cfg" -o "$tmp/ok.png" --width 64 --height 48 --stats
 # The image textures' GPU memory: the sum of their own chains (earth.jpg 2048x1024: 8.0 MiB,
 # 10.7 MiB with the box filter's mip levels).
-sed 's|^    aSolidChecker;|    anImage;|' "$src/scenes/textures.cfg" >"$src/scenes/.cli-test-image.cfg"
+sed 's|^    aSolidChecker;|    anImage;|' "$course/textures.cfg" >"$course/image.cfg"
 expect stats-images 0 '\| images 8.0 MiB \| 64x48, 1 spp$' -- \
-  "$raytex" render "$src/scenes/.cli-test-image.cfg" -o "$tmp/ok.png" --width 64 --height 48 --stats
+  "$raytex" render "$course/image.cfg" -o "$tmp/ok.png" --width 64 --height 48 --stats
 expect stats-images-box 0 '\| images 10.7 MiB \| 64x48, 1 spp$' -- \
-  "$raytex" render "$src/scenes/.cli-test-image.cfg" -o "$tmp/ok.png" --width 64 --height 48 --stats --filter box
-rm -f "$src/scenes/.cli-test-image.cfg"
+  "$raytex" render "$course/image.cfg" -o "$tmp/ok.png" --width 64 --height 48 --stats --filter box
 check png-signature test "$(head -c 8 "$tmp/ok.png" | od -An -tx1 | tr -d ' \n')" = 89504e470d0a1a0a
 check png-size test "$(od -An -tu1 -j16 -N8 "$tmp/ok.png" | tr -s ' ')" = " 0 0 0 64 0 0 0 48"
 check no-temp-files test "$(ls "$tmp" | grep -c tmp-)" -eq 0
 
 expect help-view-keys 0 'F12 .*write -o FILE' -- "$raytex" --help
-expect view-reference 2 '--reference renders on the CPU to a file' -- "$raytex" view s.cfg --reference
+expect view-reference 2 '^raytex: --reference is an option of raytex render, not of view$' -- "$raytex" view s.cfg --reference
 expect view-frames 2 '--frames expects an integer from 1' -- "$raytex" view s.cfg --frames 0
-expect render-frames 2 "unknown option '--frames'" -- "$raytex" render s.cfg --frames 5
+expect render-frames 2 '^raytex: --frames is an option of raytex view, not of render$' -- "$raytex" render s.cfg --frames 5
 # No display: the viewer says to render to a file instead, exit 1.
 expect view-no-display 1 'no display.*raytex render' -- env -u DISPLAY -u WAYLAND_DISPLAY "$raytex" view \
   "$src/scenes/textures.cfg"
 
+# The option table (docs/cli.md): --name=value, options without effect refused, the output's
+# name checked before any work, - for standard output.
+expect equals-form 0 '\| 32x24, 1 spp$' -- "$raytex" render "$src/scenes/textures.cfg" -o "$tmp/eq.png" --width=32 \
+  --height=24 --stats
+expect flag-with-value 2 '^raytex: --stats takes no value$' -- "$raytex" render s.cfg --stats=1
+for option in "--filter box" "--device 0" "--validate"; do
+  # shellcheck disable=SC2086  # the option's words
+  expect "no-effect-reference-${option%% *}" 2 "^raytex: ${option%% *} has no effect with --reference: " -- \
+    "$raytex" render "$src/scenes/textures.cfg" --reference $option -o "$tmp/no-effect.png"
+done
+check no-effect-no-output test ! -e "$tmp/no-effect.png"
+expect bench-stats 2 '^raytex: --stats is an option of raytex render and view, not of bench$' -- \
+  "$raytex" bench "$src/scenes/textures.cfg" --stats
+expect output-extension 2 "^raytex: cannot write '$tmp/out.jpg': raytex writes PNG files \(.png\), or - for standard output$" -- \
+  "$raytex" render "$src/scenes/textures.cfg" -o "$tmp/out.jpg" --width 8 --height 6
+check output-extension-nothing-written test ! -e "$tmp/out.jpg"
+expect output-extension-case 0 '' -- "$raytex" render "$src/scenes/textures.cfg" -o "$tmp/upper.PNG" --width 8 --height 6
+"$raytex" render "$src/scenes/textures.cfg" -o - --width 32 --height 24 >"$tmp/stdout.png"
+check stdout-exit-0 test $? -eq 0
+check stdout-same-png cmp -s "$tmp/stdout.png" "$tmp/eq.png"
+"$raytex" render "$src/scenes/textures.cfg" -o - --width 32 --height 24 --reference >"$tmp/stdout-reference.png"
+check stdout-reference-png test "$(head -c 8 "$tmp/stdout-reference.png" | od -An -tx1 | tr -d ' \n')" = 89504e470d0a1a0a
+expect stdout-with-stats 2 '^raytex: --stats prints to standard output, which -o - fills with the PNG$' -- \
+  "$raytex" render "$src/scenes/textures.cfg" -o - --stats
+expect stdout-bench 2 '^raytex: -o - \(standard output\) is for raytex render' -- "$raytex" bench "$src/scenes/textures.cfg" -o -
+
+if command -v script >/dev/null; then  # a terminal on standard output (util-linux's script)
+  expect stdout-terminal 2 'which is a terminal' -- script -qec \
+    "'$raytex' render '$src/scenes/textures.cfg' -o - --width 8 --height 6" /dev/null
+fi
+
 # The scene's render block sets size, samples and filter; flags override it.
 sed 's|^camera {|render { width = 40; height = 30; spp = 4; filter = box; }\ncamera {|' \
-  "$src/scenes/textures.cfg" >"$src/scenes/.cli-test-render.cfg"
-expect render-block 0 '\| 40x30, 4 spp$' -- "$raytex" render "$src/scenes/.cli-test-render.cfg" -o "$tmp/rb.png" --stats
-expect render-block-override 0 '\| 20x30, 1 spp$' -- "$raytex" render "$src/scenes/.cli-test-render.cfg" \
+  "$course/textures.cfg" >"$course/render.cfg"
+expect render-block 0 '\| 40x30, 4 spp$' -- "$raytex" render "$course/render.cfg" -o "$tmp/rb.png" --stats
+expect render-block-override 0 '\| 20x30, 1 spp$' -- "$raytex" render "$course/render.cfg" \
   -o "$tmp/rb.png" --stats --width 20 --spp 1
 sed 's|^camera {|render { width = 9000; height = 9000; }\ncamera {|' \
-  "$src/scenes/textures.cfg" >"$src/scenes/.cli-test-render.cfg"
-expect render-block-too-big 2 '9000x9000 exceeds the limit' -- "$raytex" render "$src/scenes/.cli-test-render.cfg" -o "$tmp/big.png"
-rm -f "$src/scenes/.cli-test-render.cfg"
+  "$course/textures.cfg" >"$course/big.cfg"
+expect render-block-too-big 2 '9000x9000 exceeds the limit' -- "$raytex" render "$course/big.cfg" -o "$tmp/big.png"
 
 # bench: usage errors, the table, JSON that parses with every phase, and no file unless -o.
 expect bench-runs 2 '--runs expects an integer from 1 to 1000' -- "$raytex" bench s.cfg --runs 0
 expect bench-no-scene 2 'bench needs a scene file' -- "$raytex" bench --json
-expect render-json 2 "unknown option '--json'" -- "$raytex" render s.cfg --json
+expect render-json 2 '^raytex: --json is an option of raytex bench, not of render$' -- "$raytex" render s.cfg --json
 expect bench-scene-error 2 "^$tmp/typo.cfg:3:3: " -- "$raytex" bench "$tmp/typo.cfg"
 expect bench-table 0 'frame \(GPU timestamps\) +[0-9.]+' -- "$raytex" bench "$src/scenes/textures.cfg" \
   --width 32 --height 24 --runs 2
@@ -147,10 +181,9 @@ check keep-on-error-unchanged cmp -s "$tmp/ok.png" "$tmp/keep.png"
 for i in 1 2; do
   "$raytex" render "$src/scenes/textures.cfg" --width 96 --height 72 --spp 4 -o "$tmp/same-$i.png" >/dev/null 2>&1
   sed -e 's|^    aSolidChecker;|    // aSolidChecker;|' -e 's|^    // aMarble;|    aMarble;|' \
-    -e 's|^    aChecker;|    anImage;|' "$src/scenes/textures.cfg" >"$src/scenes/.cli-test-determinism.cfg"
-  "$raytex" render "$src/scenes/.cli-test-determinism.cfg" --width 96 --height 72 --spp 4 -o "$tmp/marble-$i.png" \
+    -e 's|^    aChecker;|    anImage;|' "$course/textures.cfg" >"$course/determinism.cfg"
+  "$raytex" render "$course/determinism.cfg" --width 96 --height 72 --spp 4 -o "$tmp/marble-$i.png" \
     >/dev/null 2>&1
-  rm -f "$src/scenes/.cli-test-determinism.cfg"
 done
 check deterministic-default cmp -s "$tmp/same-1.png" "$tmp/same-2.png"
 check deterministic-marble-image cmp -s "$tmp/marble-1.png" "$tmp/marble-2.png"

@@ -1,6 +1,6 @@
 // writeFileAtomic and outputClash (host/output_file.h) on real files, device nodes and FIFOs in
 // a temporary directory. Device nodes need root (mknod); those tests skip without it.
-#include "exit_status.h"
+#include "standard_output.h"
 #include "output_file.h"
 #include "parser.h"
 #include "temp_dir.h"
@@ -227,37 +227,39 @@ TEST(OutputFile, TheSceneItsIncludesAndImagesAreNotOutputs) {
   EXPECT_EQ(clash(""), "");
 }
 
-TEST(ExitStatus, EscapingExceptionsBecomeOneLineAndExitOne) {
-  EXPECT_EQ(runGuarded([] { return 2; }), 2);
-  testing::internal::CaptureStderr();
-  EXPECT_EQ(runGuarded([]() -> int { throw std::bad_alloc(); }), 1);
-  EXPECT_EQ(testing::internal::GetCapturedStderr(), "raytex: out of memory\n");
-  testing::internal::CaptureStderr();
-  EXPECT_EQ(runGuarded([]() -> int { throw std::runtime_error("vkFoo failed"); }), 1);
-  EXPECT_EQ(testing::internal::GetCapturedStderr(), "raytex: vkFoo failed\n");
-  testing::internal::CaptureStderr();
-  EXPECT_EQ(runGuarded([]() -> int { throw 42; }), 1);
-  EXPECT_EQ(testing::internal::GetCapturedStderr(), "raytex: unexpected internal error\n");
+TEST(Errors, ALocatedErrorIsPrintedAsItIsAndAnyOtherBehindTheProgramName) {
+  const SceneError scene(FileLoc{"s.cfg", 3, 7}, "unknown key 'radiuss'");
+  EXPECT_EQ(scene.kind, ErrorKind::Scene);
+  EXPECT_EQ(errorLine(scene), "s.cfg:3:7: unknown key 'radiuss'");
+  const ImageInputError image(FileLoc{"s.cfg", 1, 39}, "cannot open image 'e.jpg': not a regular file");
+  EXPECT_EQ(image.kind, ErrorKind::ImageInput);
+  EXPECT_EQ(errorLine(image), "s.cfg:1:39: cannot open image 'e.jpg': not a regular file");
+  EXPECT_EQ(errorLine(ImageInputError("'x.png' is not a PNG or JPEG file")), "raytex: 'x.png' is not a PNG or JPEG file");
+  EXPECT_EQ(errorLine(VulkanError("vkFoo failed")), "raytex: vkFoo failed");
+  EXPECT_EQ(VulkanError("x").kind, ErrorKind::Device);
+  EXPECT_EQ(IoError("x").kind, ErrorKind::Io);
+  EXPECT_EQ(UsageError("x").kind, ErrorKind::Usage);
+  EXPECT_EQ(errorLine(SceneError(FileLoc{"missing.cfg", 0, 0}, "cannot open")), "missing.cfg: cannot open");
 }
 
-TEST(ExitStatus, AFailedWriteToTheOutputStreamIsExitOne) {
+TEST(Errors, AFailedWriteToTheOutputStreamIsAnIoError) {
   fs::path dir = tempDir("stdout");
   fs::path full = dir / "full";
   MAKE_CHAR_DEVICE(full, 7);
   FILE* out = fopen(full.c_str(), "w");
   ASSERT_NE(out, nullptr);
-  testing::internal::CaptureStderr();  // flushes every stream: the text goes in after it
   fputs("usage: ...\n", out);
-  int rc = checkedExit(0, out);
-  std::string err = testing::internal::GetCapturedStderr();
+  try {
+    finishStdout(out);
+    ADD_FAILURE() << "a write to /dev/full passed";
+  } catch (const IoError& e) {
+    EXPECT_STREQ(e.what(), "cannot write to standard output: No space left on device");
+  }
   fclose(out);
-  EXPECT_EQ(rc, 1);
-  EXPECT_EQ(err, "raytex: cannot write to standard output: No space left on device\n");
   FILE* fine = fopen((dir / "fine").c_str(), "w");
   ASSERT_NE(fine, nullptr);
   fputs("ok\n", fine);
-  EXPECT_EQ(checkedExit(0, fine), 0);
-  EXPECT_EQ(checkedExit(2, fine), 2);
+  EXPECT_NO_THROW(finishStdout(fine));
   fclose(fine);
 }
 

@@ -158,7 +158,7 @@ if [ "${RAYTEX_SANITIZED:-0}" != 1 ]; then
 fi
 
 # --help names the new exit reasons.
-expect help-exit-codes 0 'output file or stdout not written, out of' -- "$raytex" --help
-expect help-output 0 'a device or FIFO is' -- "$raytex" --help
+expect help-exit-codes 0 '^     an output file or standard output not written' -- "$raytex" --help
+expect help-output 0 'FIFO is written through' -- "$raytex" --help
 
 finish

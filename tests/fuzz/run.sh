@@ -31,5 +31,6 @@ cp "$src"/scenes/*.cfg "$src"/tests/malformed/*.cfg ${seeds:+"$seeds"/*.cfg} "$c
 mkdir -p "$build/findings"
 export ASAN_OPTIONS=detect_leaks=1:allocator_may_return_null=1
 export UBSAN_OPTIONS=print_stacktrace=1
-"$build/tests/fuzz/raytex_fuzz_$target" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=$rss \
+# A unit over 30 s is a hang; a pipeline compile on a loaded machine takes over 10 s.
+"$build/tests/fuzz/raytex_fuzz_$target" -max_total_time="$seconds" -timeout=30 -rss_limit_mb=$rss \
   -dict="$src/tests/fuzz/scene.dict" -artifact_prefix="$build/findings/" -print_final_stats=1 "$corpus"

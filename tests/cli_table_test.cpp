@@ -1,0 +1,103 @@
+// The command line's table (host/cli.cpp): parsing of both option forms, refusals, and the
+// reference in docs/cli.md, which must equal the table.
+#include "cli.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace {
+
+const std::string kCliDoc = std::string(RAYTEX_SOURCE_DIR) + "/docs/cli.md";
+const std::string kBegin = "<!-- option table: begin -->\n";
+const std::string kEnd = "<!-- option table: end -->\n";
+
+std::string readWhole(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// The Usage error's message of parsing `args`, or "" when they parse.
+std::string refusal(const std::vector<std::string>& args) {
+  try {
+    parseCli(args);
+  } catch (const UsageError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST(CliTable, TheReferenceInDocsIsTheTable) {
+  std::string doc = readWhole(kCliDoc);
+  size_t begin = doc.find(kBegin), end = doc.find(kEnd);
+  ASSERT_NE(begin, std::string::npos) << kCliDoc << " lacks " << kBegin;
+  ASSERT_NE(end, std::string::npos) << kCliDoc << " lacks " << kEnd;
+  begin += kBegin.size();
+  const std::string table = optionReference();
+  if (getenv("RAYTEX_UPDATE_GOLDENS")) {
+    doc.replace(begin, end - begin, table);
+    std::ofstream(kCliDoc, std::ios::binary) << doc;
+    return;
+  }
+  EXPECT_EQ(doc.substr(begin, end - begin), table)
+      << "docs/cli.md differs from host/cli.cpp's table; RAYTEX_UPDATE_GOLDENS=1 rewrites its reference";
+}
+
+TEST(CliTable, LongOptionsTakeTheirValueAfterASpaceOrAnEqualsSign) {
+  CliArgs spaced = parseCli({"render", "s.cfg", "--width", "320", "--filter", "box", "-o", "a.png"});
+  CliArgs joined = parseCli({"render", "s.cfg", "--width=320", "--filter=box", "--output=a.png"});
+  for (const CliArgs& cli : {spaced, joined}) {
+    EXPECT_EQ(cli.command, CliCommand::Render);
+    EXPECT_EQ(cli.render.scene, "s.cfg");
+    EXPECT_EQ(cli.render.width.value_or(0), 320u);
+    EXPECT_EQ(cli.render.filter.value_or(false), true);
+    EXPECT_EQ(cli.render.output, "a.png");
+  }
+  EXPECT_EQ(parseCli({"bench", "s.cfg", "--runs=7"}).bench.runs, 7u);
+  EXPECT_EQ(parseCli({"render", "s.cfg", "--allow-read=a=b"}).render.allowRead.at(0), "a=b");
+  EXPECT_EQ(refusal({"render", "s.cfg", "--width="}), "--width expects an integer from 1 to 16384, got ''");
+  EXPECT_EQ(refusal({"render", "s.cfg", "--stats=1"}), "--stats takes no value");
+  EXPECT_EQ(refusal({"render", "s.cfg", "--width"}), "--width needs a value");
+}
+
+TEST(CliTable, AnOptionOfAnotherCommandIsRefusedByName) {
+  EXPECT_EQ(refusal({"render", "s.cfg", "--frames", "3"}), "--frames is an option of raytex view, not of render");
+  EXPECT_EQ(refusal({"view", "s.cfg", "--reference"}), "--reference is an option of raytex render, not of view");
+  EXPECT_EQ(refusal({"bench", "s.cfg", "--stats"}), "--stats is an option of raytex render and view, not of bench");
+  EXPECT_EQ(refusal({"render", "s.cfg", "--fast"}), "unknown option '--fast' (try raytex --help)");
+}
+
+TEST(CliTable, AnOptionWithoutEffectIsRefused) {
+  EXPECT_EQ(refusal({"render", "s.cfg", "--reference", "--filter", "box"}),
+            "--filter has no effect with --reference: the reference samples each texture at its hit point");
+  EXPECT_EQ(refusal({"render", "s.cfg", "--device=0", "--reference"}),
+            "--device has no effect with --reference: the reference renders on the CPU");
+  EXPECT_EQ(refusal({"render", "s.cfg", "--reference", "--validate"}),
+            "--validate has no effect with --reference: the reference uses no Vulkan");
+  EXPECT_EQ(refusal({"render", "s.cfg", "-o", "-", "--stats"}),
+            "--stats prints to standard output, which -o - fills with the PNG");
+  EXPECT_EQ(refusal({"view", "s.cfg", "-o", "-"}), "-o - (standard output) is for raytex render; bench and view write files");
+  EXPECT_EQ(refusal({"bench", "s.cfg", "-o=-"}), "unknown option '-o=-' (try raytex --help)");
+  EXPECT_EQ(refusal({"render", "s.cfg", "--reference", "--spp", "4", "--stats"}), "");
+  EXPECT_EQ(refusal({"render", "s.cfg", "-o", "-"}), "");
+}
+
+TEST(CliTable, EveryOptionIsInTheHelp) {
+  const std::string help = usageText();
+  const std::string reference = optionReference();
+  size_t rows = 0;
+  for (size_t at = reference.find("\n| `"); at != std::string::npos; at = reference.find("\n| `", at + 1)) {
+    ++rows;
+    size_t nameEnd = reference.find('`', at + 4);
+    const std::string name = reference.substr(at + 4, nameEnd - at - 4);
+    EXPECT_NE(help.find(name), std::string::npos) << name;
+  }
+  EXPECT_GE(rows, 14u);
+}
