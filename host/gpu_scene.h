@@ -45,7 +45,8 @@ struct GpuScene {
 
 // How buildGpuScene packs a scene.
 struct PackOptions {
-  // The images' mip chains (only the box-filtered kernel reads them; 11 ms for earth.jpg).
+  // The images' mip chains (only the box-filtered kernel reads them; their cost:
+  // docs/textures.md, "Filtering image textures").
   bool mipmaps = true;
   // Every material the scene defines, not only those its objects use, so that objects can
   // switch material with packCamera alone (the viewer); shape still holds only the kinds in use.

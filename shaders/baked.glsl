@@ -1,15 +1,14 @@
 // The scene built into the kernel (SPEC_BAKED): its spheres, planes, lights and materials as
 // specialisation constants, each item laid out word for word as its uniform block's struct
 // (common.h, BAKED_*_WORD and BAKED_*_STRIDE). A kernel specialised to a scene's values, not
-// only its counts, folds them into its code: the default scene's kernel went from 286 to 189
-// x86 instructions per pixel (bench/instructions.sh), and its material is picked with selects
-// among constants instead of gathered per lane. Included by trace.comp.glsl after common.h.
+// only its counts, folds them into its code, and picks its material with selects among
+// constants instead of gathering it per lane (docs/performance.md, "Where the kernel's time
+// goes"). Included by trace.comp.glsl after common.h.
 //
-// The items are built from the constants by name, not read from an array: an array initialised
-// from them (uint[](...), 390 words) tripled lavapipe's pipeline creation in every variant,
-// baked or not. Million x86 instructions in vkCreateComputePipelines (callgrind of
-// raytex_bench_frames scenes/textures.cfg 320 240 0 1 baked|unbaked): 283 before any baking,
-// 896 and 851 with the array, 320 and 316 by name.
+// The items are built from the constants by name, not read from an array: lavapipe processes
+// an array initialised from them (uint[](...)) in every variant, baked or not, and that
+// triples its pipeline creation (docs/performance.md, "Specialised against unspecialised
+// pipelines").
 
 // Word 10 t + d is constant_id SPEC_BAKED_WORDS + 10 t + d, named bakedWord<t>_<d>.
 #define BAKED_WORD(t, d) layout(constant_id = SPEC_BAKED_WORDS + 10 * t + d) const uint bakedWord##t##_##d = 0u;

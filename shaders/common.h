@@ -17,7 +17,8 @@ using vec4 = glm::vec4;
 using uvec4 = glm::uvec4;
 #endif
 
-// Compute workgroup: 8x8 measured as fast as 16x8/16x16 on lavapipe.
+// Compute workgroup: 8x8 (one tile); larger workgroups are no faster on lavapipe
+// (docs/performance.md, "Where the kernel's time goes").
 #define WORKGROUP_X 8
 #define WORKGROUP_Y 8
 
@@ -26,20 +27,22 @@ using uvec4 = glm::uvec4;
 #define BINDING_FRAME 1      // uniform Frame
 // The scene's objects, lights and materials are uniform buffers, not storage buffers: lavapipe
 // turns each storage-buffer load inside control flow (a branch on what a ray hit, a loop) into
-// a loop over the SIMD lanes with a bounds check per load. As uniform buffers the course
-// scene's kernel went from 613 to 395 x86 instructions per pixel (bench/instructions.sh).
+// a loop over the SIMD lanes with a bounds check per load, where a uniform-buffer load is one
+// load, or a gather where the index differs per lane (docs/performance.md, "Where the kernel's
+// time goes").
 #define BINDING_SPHERES 2    // uniform Sphere[MAX_SPHERES]
 #define BINDING_PLANES 3     // uniform Plane[MAX_PLANES]
 #define BINDING_MATERIALS 4  // uniform Material[MAX_MATERIALS]
 #define BINDING_LIGHTS 5     // uniform Light[MAX_LIGHTS]
-#define BINDING_NOISE 6      // uniform NoiseTable (a UBO: an SSBO is 1.6x slower on lavapipe)
+#define BINDING_NOISE 6      // uniform NoiseTable (a uniform block: faster than a storage buffer on
+                             // lavapipe, docs/performance.md, "Where the kernel's time goes")
 #define BINDING_IMAGES 7     // sampler2D[MAX_IMAGES], one element per image file at its own size
                              // (1 x 1 placeholders past the scene's images)
 #define BINDING_ACCUMULATION 8  // storage vec4[width * height]: running sums of progressive
                                 // rendering (a 16-byte placeholder when not accumulating)
 #define BINDING_DISPLAY 9  // r32ui storage image: progressive rendering's mean as 8-bit sRGB in the
-                           // swapchain's byte order (Frame.displayBgra), copied to the window
-                           // without a blit (1 x 1 when not accumulating)
+                           // swapchain's byte order (Frame.displayBgra), which the viewer copies
+                           // into the swapchain image (1 x 1 when not accumulating)
 // The sphere tree (SPEC_SPHERE_TREE): its nodes in a uniform block where they fit, else the
 // nodes and the spheres in storage buffers (placeholders where unused: the bindings exist).
 #define BINDING_TREE 10            // uniform BvhNode[MAX_UNIFORM_TREE_NODES]
@@ -108,7 +111,7 @@ using uvec4 = glm::uvec4;
 // Frame.shadowGrids): a grid over the plane listing, per grid cell, the spheres whose shadow
 // covers it, two words a cell (first entry, count), row by row, in BINDING_TILE_RANGES.
 // Scenes with more spheres than the loop is specialised to (MAX_SPECIALISED_COUNT) walk the tree
-// (measured: docs/performance.md, "The sphere tree"); fewer keep the loop, unrolled.
+// (docs/performance.md, "The sphere tree"); fewer keep the loop, unrolled.
 #define SPHERE_TREE_MIN_SPHERES 9
 
 // Lavapipe ends a kernel's loops after 65 535 passes per SIMD group, counted over every loop of
@@ -157,8 +160,8 @@ using uvec4 = glm::uvec4;
 
 // Scenes with at most this many spheres, planes or lights get kernels with the count
 // built in (the loops over them unrolled); larger ones loop to Frame's count. On lavapipe a
-// loop bounded by a uniform made the default scene's 1080p frame 1.5x slower (104.6 against
-// 68.2 ms, raytex_bench_specialisation).
+// loop bounded by a uniform is markedly slower than the unrolled one (docs/performance.md,
+// "Specialised against unspecialised pipelines").
 #define MAX_SPECIALISED_COUNT 8
 #define COUNT_FROM_FRAME 0xFFFFFFFFu
 
@@ -198,8 +201,9 @@ using uvec4 = glm::uvec4;
 
 // Texture filtering: a build variant of the kernel (RAYTEX_FILTER_BOX), not a constant.
 #define FILTER_POINT 0  // point-sample textures at the hit (the course's method)
-#define FILTER_BOX 1    // average over the sample's footprint (ray differentials), where the
-                        // kind has a closed form: checker, solid_checker
+#define FILTER_BOX 1    // average over the sample's footprint (ray differentials): in closed
+                        // form for checker, solid_checker and bricks, band-limited for the
+                        // noise kinds, from the mip chain for images (docs/textures.md)
 
 // Material.imageIndex's wrap bit: the image appears once (CLAMP_TO_EDGE), not tiled.
 #define IMAGE_WRAP_CLAMP 0x10000u

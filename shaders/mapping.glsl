@@ -87,7 +87,7 @@ TexCoord planeTexCoord(Plane pl, vec3 p, vec3 dpdx, vec3 dpdy, out Footprint fp)
 // atan(0, 0) is undefined in GLSL: at the poles phi = 0 (u = 0.5).
 // theta is evaluated as atan(n_y, |n_xz|), which equals asin(n_y) for a unit n but
 // is well conditioned everywhere and cannot go NaN when rounding pushes |n_y| past 1
-// (no clamp needed). Measured on lavapipe: its asin is off by up to 2e-4 rad for
+// (no clamp needed). Lavapipe's asin is off by up to 2e-4 rad for
 // |n_y| > 0.5 (0.13 texel of a 1024-row image, visible at sharp image edges); the
 // atan form agrees with the double asin of host/mapping.cpp to ~1e-7.
 // latLong false (a constant: no sphere's kind reads uv) leaves uv at 0 and skips the atans.

@@ -8,11 +8,11 @@
 // host/noise.cpp, fillNoiseTable).
 //
 // - Lattice cell from floor(), reduced mod 256 in float before any int conversion
-//   (int() truncates toward 0 and breaks negative cells; accuracy.md F1). Period 256.
+//   (int() truncates toward 0 and breaks negative cells). Period 256.
 // - Quintic fade 6t^5 - 15t^4 + 10t^3; 12 cube-edge gradients chosen by hash & 15
 //   (slots 12..15 repeat (1,1,0), (0,-1,1), (-1,1,0), (0,-1,-1)).
 // - float32: the fraction p - floor(p) keeps ~24 - log2|p| bits; far from the
-//   origin reduce coordinates mod 256 on the host (accuracy.md F6).
+//   origin reduce coordinates mod 256 on the host (docs/textures.md, "Noise").
 #ifndef RAYTEX_NOISE_GLSL
 #define RAYTEX_NOISE_GLSL
 
@@ -44,8 +44,9 @@ void noiseCell(vec3 p, out vec3 f, out uvec4 hLo, out uvec4 hHi) {
 }
 
 // The gradient hash h & 15 selects: the 12 cube-edge midpoints, then (1,1,0), (0,-1,1),
-// (-1,1,0), (0,-1,-1) again. Computed with selects, not a table: with a dynamically
-// indexed const vec3[16] the marble scene took 2.1 s at 320x240 on lavapipe, 0.16 s so.
+// (-1,1,0), (0,-1,-1) again. Computed with selects, not a table: lavapipe is an order of
+// magnitude slower with a dynamically indexed const vec3[16] (docs/performance.md, "Where the
+// kernel's time goes").
 vec3 noiseGradient(uint h) {
   h &= 15u;
   float su = (h & 1u) != 0u ? -1.0 : 1.0;  // sign of the first axis
@@ -151,7 +152,8 @@ float dturbulence(vec3 p, uint octaves) {
 }
 
 #ifdef RAYTEX_FILTER_BOX
-// --- Frequency-clamped noise (FILTER_BOX; accuracy.md L5, pbrt FBm/Turbulence) ---
+// --- Frequency-clamped noise (FILTER_BOX; docs/textures.md, "Filtering the noise kinds"; pbrt
+// FBm/Turbulence) ---
 // `cells` is the width of a sample's footprint in lattice cells of the noise it filters
 // (textures.glsl, noiseFootprintWidth); octave i of a sum sees cells * 2^i. An octave is
 // replaced by the least-squares estimate of its average over the footprint given its value

@@ -42,7 +42,7 @@ Surface surfaceAt(Hit hit, vec3 o, vec3 d) {
 // steps per component (Wachter and Binder, Ray Tracing Gems ch. 6), so the offset follows
 // the rounding error of p at any distance from the origin; a fixed offset is too large
 // near the origin and, far out, smaller than the rounding (or, scaled by |p|, larger than
-// the objects: at 1e5 it lifted shadow rays over a unit sphere). Components near zero,
+// the objects: at 1e5 it lifts shadow rays over a unit sphere). Components near zero,
 // where float steps are tiny, move by a small absolute amount instead.
 vec3 offsetOrigin(vec3 p, vec3 n) {
   const float nearZero = 1.0 / 32.0;

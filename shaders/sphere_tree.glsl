@@ -147,7 +147,7 @@ bool occludedInGrid(vec3 o, vec3 d, float tMax, uint light) {
 // share the list) lies on the segment from o along unit d before distance tMax. Where the list
 // is long, the spheres of the light's shadow grid where the ray lands, in kernels whose spheres
 // are in storage buffers (lavapipe runs all of a kernel's code, and in smaller scenes the
-// grid's cost more than it saved: docs/performance.md, "Shadow grids"), or the tree's.
+// grid costs more than it saves: docs/performance.md, "Shadow grids"), or the tree's.
 bool occludedInTile(vec3 o, vec3 d, float tMax, uint light) {
   uint range = frame.shadowRanges + 2u * (shadowCell * lightCount() + light);
   uint first = tileRanges[range], count = tileRanges[range + 1u];

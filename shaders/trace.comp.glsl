@@ -24,8 +24,8 @@ layout(constant_id = SPEC_PLANE_COUNT) const uint PLANE_COUNT = COUNT_FROM_FRAME
 layout(constant_id = SPEC_LIGHT_COUNT) const uint LIGHT_COUNT = COUNT_FROM_FRAME;
 layout(constant_id = SPEC_IMAGE_COUNT) const uint IMAGE_COUNT = MAX_IMAGES;
 layout(constant_id = SPEC_OUTPUT_MODE) const uint OUTPUT_MODE = OUTPUT_SHADED;
-// A constant, not a uniform: around the whole shading code, a loop with a runtime bound
-// doubled the 1-sample frame time on lavapipe (119 -> 216 ms at 1080p).
+// A constant, not a uniform: on lavapipe a loop with a runtime bound around the whole shading
+// code is far slower (docs/performance.md, "Specialised against unspecialised pipelines").
 layout(constant_id = SPEC_SAMPLES_PER_SIDE) const uint SAMPLES_PER_SIDE = 1u;
 layout(constant_id = SPEC_PROGRESSIVE) const bool PROGRESSIVE = false;
 layout(constant_id = SPEC_BAKED) const bool BAKED = false;
@@ -60,9 +60,8 @@ layout(std140, binding = BINDING_TILE_ORDER) uniform TileOrderBlock { uvec4 tile
 // The frame and, where the kernel is specialised to the scene's counts, its spheres, planes
 // and lights, copied from the uniform blocks at the start of main, before any branch: lavapipe
 // reads a uniform block with one scalar load only outside divergent control flow; after it,
-// even at a constant offset, it gathers one load per lane (the default scene's kernel, x86
-// instructions per pixel by bench/instructions.sh: 374, 340 with the frame copied, 325 also
-// without main's early return, 286 also with the objects and lights copied).
+// even at a constant offset, it gathers one load per lane (docs/performance.md, "Where the
+// kernel's time goes").
 Frame frame;
 uint primaryTile;  // the pixel's tile (TILE_LISTS), set in main
 uint shadowCell;   // the pixel's cell of shadow lists (SHADOW_LISTS), set in main
@@ -217,7 +216,7 @@ vec4 debugOutput(vec3 origin, vec2 film) {
 #endif
 
 // A linear colour as the window shows it: sRGB-encoded 8-bit channels packed in the
-// swapchain's byte order (a copy, not a blit, then puts it on screen).
+// swapchain's byte order, so that the viewer can copy the image into the swapchain as it is.
 uint displayPixel(vec3 linear) {
   vec3 c = clamp(linear, 0.0, 1.0);
   // The sRGB curve from square roots (Taylor's fit, within half a step of 8 bits above the
@@ -263,8 +262,8 @@ void main() {
 #ifdef RAYTEX_SUPERSAMPLE
   // N x N samples in one dispatch (N > 1, not progressive). No for loop: lavapipe tests a
   // loop's condition at the top of each pass and leaves only when no lane is left, so a for
-  // loop runs its body once more with every lane masked off (aDturbulence: 931 x86
-  // instructions per pixel against 456); a do-while tests at the bottom.
+  // loop runs its body once more with every lane masked off; a do-while tests at the bottom
+  // (docs/performance.md, "Where the kernel's time goes").
   uint k = 0u;
   do {
     sum += radiance(origin, vec2(pixel) + (vec2(k % n, k / n) + 0.5) / float(n), 1.0 / float(n));
@@ -273,7 +272,7 @@ void main() {
   // One sample per dispatch, with no loop around it: the pixel centre, or the progressive
   // sample frame.sampleIndex. (One call of radiance per build variant: the driver inlines each
   // call before the constants drop what a scene lacks, so a second call costs pipeline creation
-  // its whole size again; a loop around this one cost 9 % more per pixel where it nests loops.
+  // its whole size again; a loop around this one costs more per pixel where it nests loops:
   // docs/performance.md, "One trace per kernel".)
   uint k = PROGRESSIVE ? frame.sampleIndex : 0u;
   sum += radiance(origin, vec2(pixel) + (vec2(k % n, k / n) + 0.5) / float(n), 1.0 / float(n));

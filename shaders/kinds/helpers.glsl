@@ -3,8 +3,8 @@
 #ifndef RAYTEX_KIND_HELPERS_GLSL
 #define RAYTEX_KIND_HELPERS_GLSL
 
-// 0 for an even integer-valued x, 1 for an odd one (float mod: no int casts or %
-// of negative values; accuracy.md F1).
+// 0 for an even integer-valued x, 1 for an odd one (float mod: an int cast truncates towards
+// 0, and GLSL leaves % of a negative value undefined).
 float textureParity(float x) { return mod(x, 2.0); }
 vec2 textureParity(vec2 x) { return mod(x, 2.0); }
 
@@ -28,14 +28,12 @@ float filteredParity(float x, float w) {
   return (parityIntegral(x + 0.5 * w) - parityIntegral(x - 0.5 * w)) / w;
 }
 
-// Parity of a sum of independent axes under a separable box: with e_i the average parity
-
-// --- Filtered noise kinds (FILTER_BOX; accuracy.md L5 and L6, docs/textures.md "Filtering
-// the noise kinds"). Octaves finer than the footprint fade to their mean (noise.glsl,
-// filteredTurbulence), and the periodic profiles of marble and wood are band-limited: the
-// blur of their phase by the footprint (its linear change across it) and by the averaged-away
-// turbulence octaves (their variance) fades the stripes to their mean. Zero width gives the
-// point-sampled formulas above.
+// --- Filtered noise kinds (FILTER_BOX; docs/textures.md, "Filtering the noise kinds").
+// Octaves finer than the footprint fade to their mean (noise.glsl, filteredTurbulence), and
+// the periodic profiles of marble and wood are band-limited: the blur of their phase by the
+// footprint (its linear change across it) and by the averaged-away turbulence octaves (their
+// variance) fades the stripes to their mean. Zero width gives the point-sampled formulas
+// above.
 
 // The scalar footprint width of a noise kind, in lattice cells of its first octave: the length
 // of the per-axis widths solidWidth(fp) (after wood's `stretch` of the noise argument) times

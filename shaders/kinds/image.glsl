@@ -68,8 +68,9 @@ vec3 imagePoint(Material m, TexCoord tc) {
 // (linear-light box averages built on the host) over the sample's footprint, the Jacobian
 // J = [dst/dx dst/dy] in texels. J's ellipse is split along its major axis into probes, each
 // at the level of the longer of the minor axis and the probe spacing (anisotropic filtering
-// in the shader: lavapipe's sampler anisotropy returned wrong texels in this compute kernel).
-// The derivatives are analytic, so the sphere's u seam gets no wrong level (accuracy.md F2).
+// in the shader: lavapipe's sampler anisotropy returns wrong texels in this compute kernel).
+// The derivatives are analytic, so the sphere's u seam gets no wrong level (no line of average
+// colour; docs/textures.md, "Filtering image textures").
 // At most IMAGE_MAX_PROBES probes on planes (beyond that the footprint is blurred along its
 // minor axis, as hardware anisotropic filtering does); on spheres IMAGE_SPHERE_PROBES, since
 // the map's anisotropy grows as 1/sin(colatitude) near the poles (33 at 1.7 degrees).

@@ -19,7 +19,7 @@ float marblePoint(Material m, TexCoord tc) {
 // the exact box average of a linear phase), s^2 the phase variance of the averaged-away
 // turbulence (strength^2 times filteredTurbulence's `unresolved`; exp(-k^2 s^2 / 2) is the mean
 // of cos(k d) for a Gaussian d). Far away it tends to 5/16, the profile's mean; A_k = 1 gives
-// marbleBlend. cos 2x and sin 3x come from sin x: one sin as before.
+// marblePoint. cos 2x and sin 3x come from sin x: one sin, as in marblePoint.
 float marbleBox(Material m, TexCoord tc, Footprint fp) {
   float scale = m.params.x, strength = m.params.y;
   vec3 q = noiseArgument(tc, scale);

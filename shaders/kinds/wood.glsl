@@ -26,7 +26,7 @@ float woodRingIntegral(float x) {
 // (mean 1/3 once w spans rings): w^2 = a^2 + b^2 + 12 s^2, with a, b the change of scale * r
 // across the footprint's two edges and s^2 the variance of the averaged-away turbulence
 // (strength^2 times `unresolved`); a box of width sqrt(12) s has the same variance. w -> 0
-// gives woodBlend.
+// gives woodPoint.
 float woodBox(Material m, TexCoord tc, Footprint fp) {
   float scale = m.params.x, strength = m.params.y;
   vec3 stretch = vec3(1.0, 0.25, 1.0);
