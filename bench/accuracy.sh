@@ -2,12 +2,16 @@
 # The speed-accuracy chart: renders the course scene's textures, the horizon scene and the
 # bricks scene with every method and sample count, times them on the GPU and measures their
 # error against the float64 reference, then draws docs/accuracy.png and writes docs/accuracy.csv.
-# Usage: bench/accuracy.sh [WIDTH HEIGHT RUNS]   (default 160 120 5; needs build/ and
-#        python3-matplotlib, python3-skimage, python3-numpy from Debian)
+# Usage: bench/accuracy.sh [BUILD_DIR]   (default build; env: WIDTH, HEIGHT, RUNS, default
+#        160 120 5; needs python3-matplotlib, python3-skimage, python3-numpy from Debian)
+#   writes BUILD_DIR/accuracy/ (the CSV and images), docs/accuracy.png and docs/accuracy.csv.
 set -euo pipefail
+[ $# -le 1 ] || { echo "usage: bench/accuracy.sh [BUILD_DIR]   (env: WIDTH, HEIGHT, RUNS)" >&2; exit 2; }
+build=$(cd "${1:-build}" && pwd)
 cd "$(dirname "$0")/.."
-width=${1:-160} height=${2:-120} runs=${3:-5}
-out=build/accuracy
+width=${WIDTH:-160} height=${HEIGHT:-120} runs=${RUNS:-5}
+[ -x "$build/raytex_bench_accuracy" ] || { echo "accuracy.sh: no $build/raytex_bench_accuracy (build it first)" >&2; exit 1; }
+out=$build/accuracy
 mkdir -p "$out"
 scenes=()
 variants=()
@@ -20,5 +24,5 @@ for material in aSolidChecker aMarble anImage; do
   scenes+=("$material=$scene")
 done
 scenes+=("horizon=scenes/horizon.cfg" "bricks=scenes/bricks.cfg")
-build/raytex_bench_accuracy "$out" "$width" "$height" "$runs" "${scenes[@]}"
+"$build/raytex_bench_accuracy" "$out" "$width" "$height" "$runs" "${scenes[@]}"
 /usr/bin/python3 bench/accuracy_chart.py "$out/accuracy.csv" docs/accuracy.png docs/accuracy.csv

@@ -4,7 +4,7 @@
 Adds SSIM (scikit-image's structural_similarity on the sRGB images, against the float64
 reference) to each row and plots error against GPU time, log-log: one panel per scene, one
 line per method, one point per sample count.
-Usage: accuracy_chart.py IN.csv OUT.png OUT.csv
+Usage: bench/accuracy_chart.py IN.csv OUT.png OUT.csv
 """
 import csv
 import os

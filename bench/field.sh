@@ -41,7 +41,7 @@ povray_trace() {  # SCENE.pov -> POV-Ray's Trace Time in ms
 
 echo "N, raytex frame ms, POV-Ray trace ms, POV-Ray / raytex (${width}x$height, $LP_NUM_THREADS threads, $rounds rounds)"
 for n in "${sizes[@]}"; do
-  python3 "$here/sphere_field.py" "$n" --seed "$seed" --out "$tmp"
+  SEED=$seed OUT_DIR=$tmp python3 "$here/sphere_field.py" "$n"
   : >"$tmp/r" && : >"$tmp/p"
   refused=""
   for _ in $(seq "$rounds"); do

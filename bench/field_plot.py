@@ -3,8 +3,9 @@
 
 Reads the lines `N, raytex frame ms, POV-Ray trace ms, ratio` (the header line and refused
 sizes are skipped for raytex) and draws both series log-log.
-Usage: field_plot.py FIELD.txt OUT.png [TITLE]
+Usage: bench/field_plot.py FIELD.txt OUT.png   (env: TITLE, the chart's title)
 """
+import os
 import sys
 
 import matplotlib
@@ -25,7 +26,7 @@ def read(path):
 
 
 def main():
-    if len(sys.argv) < 3:
+    if len(sys.argv) != 3:
         sys.exit(__doc__)
     rows = read(sys.argv[1])
     if not rows:
@@ -37,7 +38,7 @@ def main():
     ax.loglog(n, [r[2] for r in rows], "s-", label="POV-Ray 3.7 (trace time)")
     ax.set_xlabel("spheres (N)")
     ax.set_ylabel("ms per 1920x1080 frame, 2 threads")
-    ax.set_title(sys.argv[3] if len(sys.argv) > 3 else "Frame time against the number of spheres")
+    ax.set_title(os.environ.get("TITLE", "Frame time against the number of spheres"))
     ax.grid(True, which="both", alpha=0.3)
     ax.legend()
     fig.tight_layout()

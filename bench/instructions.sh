@@ -4,12 +4,14 @@
 # One thread and Mesa's shader cache off, so both runs compile alike. Deterministic: use it to
 # compare kernel variants on a shared machine, where frame times move by 30 % with the load.
 # Needs valgrind (apt-get install valgrind); about 15 s per scene at 320x240.
-# Usage: bench/instructions.sh [BUILD_DIR] SCENE... (env: WIDTH, HEIGHT, SIDE = samples per side,
-# UNBAKED=1: the kernel that reads the scene from its uniform blocks, as the viewer's does;
-# FILTER=box: the box-filtered kernel, as --filter box; PROGRESSIVE=1: the viewer's kernel, one
-# sample per frame, accumulated; TILES=0: the scene's one kernel, not tile kernels)
+# Usage: bench/instructions.sh BUILD_DIR SCENE...   (env: WIDTH, HEIGHT, default 320 240; SIDE =
+# samples per side, default 1; UNBAKED=1: the kernel that reads the scene from its uniform blocks,
+# as the viewer's does; FILTER=box: the box-filtered kernel, as --filter box; PROGRESSIVE=1: the
+# viewer's kernel, one sample per frame, accumulated; TILES=0: the scene's one kernel, not tile
+# kernels)
 set -euo pipefail
-build=${1:-build}
+[ $# -ge 2 ] || { echo "usage: bench/instructions.sh BUILD_DIR SCENE...   (env: WIDTH, HEIGHT, SIDE, UNBAKED, FILTER, PROGRESSIVE, TILES)" >&2; exit 2; }
+build=$1
 shift
 frames=$build/raytex_bench_frames
 [ -x "$frames" ] || { echo "instructions.sh: no $frames (build it first)" >&2; exit 1; }

@@ -7,14 +7,14 @@ stored in that cache (an ELF object, zstd-compressed), disassembles it with objd
 each instruction up with how often it ran. Prints the instructions per pixel, how they split
 between code run once per SIMD vector of 8 invocations and code run once per lane (lavapipe's
 scalarised loads and stores, loops over the lanes), and the most frequent operations; writes
-the annotated listing to --listing.
+the annotated listing to LISTING.
 
 It showed that storage-buffer loads in control flow become loops over the lanes (common.h,
 BINDING_SPHERES) and what the noise's gradient vectors cost (noise.glsl, noiseGradientDot).
 
 Needs valgrind, objdump (binutils) and zstd. One thread, so counts are exact; about a minute
-at 320x240. Usage: bench/kernel_profile.py SCENE [--build DIR] [--width W] [--height H]
-[--frames N] [--listing FILE]
+at 320x240. Usage: bench/kernel_profile.py BUILD_DIR SCENE   (env: WIDTH, HEIGHT, FRAMES,
+LISTING, default 320 240 2 kernel_profile.txt)
 """
 import argparse
 import collections
@@ -106,14 +106,18 @@ def disassemble(obj):
 
 
 def main():
-    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    p = argparse.ArgumentParser(description=__doc__.splitlines()[0],
+                                epilog="env: WIDTH, HEIGHT, FRAMES, LISTING (default 320 240 2 kernel_profile.txt)")
+    p.add_argument("build")
     p.add_argument("scene")
-    p.add_argument("--build", default="build")
-    p.add_argument("--width", type=int, default=320)
-    p.add_argument("--height", type=int, default=240)
-    p.add_argument("--frames", type=int, default=2)
-    p.add_argument("--listing", default="kernel_profile.txt")
     args = p.parse_args()
+    try:
+        args.width = int(os.environ.get("WIDTH", "320"))
+        args.height = int(os.environ.get("HEIGHT", "240"))
+        args.frames = int(os.environ.get("FRAMES", "2"))
+    except ValueError as e:
+        p.error(f"WIDTH, HEIGHT and FRAMES are integers ({e})")
+    args.listing = os.environ.get("LISTING", "kernel_profile.txt")
     with tempfile.TemporaryDirectory() as tmp:
         out = os.path.join(tmp, "callgrind.out")
         run_callgrind(args, os.path.join(tmp, "cache"), out)

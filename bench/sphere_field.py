@@ -1,9 +1,9 @@
 #!/usr/bin/env python3
 """A field of N small spheres on the course's checker floor, for raytex and for POV-Ray 3.7.
 
-Usage: bench/sphere_field.py N [--seed S] [--out DIR]
-Writes DIR/field-N.cfg (raytex) and DIR/field-N.pov (POV-Ray; render it with
-+L<repository>/bench/povray, as bench/povray/compare.sh does). DIR defaults to the current one.
+Usage: bench/sphere_field.py N   (env: SEED, default 1; OUT_DIR, default the current directory)
+Writes OUT_DIR/field-N.cfg (raytex) and OUT_DIR/field-N.pov (POV-Ray; render it with
++L<repository>/bench/povray, as bench/povray/compare.sh does).
 
 The field: radii uniform in [0.1, 0.3], the eight course materials of
 scenes/texture_include.cfg in turn, centres uniform over a square of side 2 sqrt(N) (one sphere
@@ -83,16 +83,20 @@ def povray_scene(field):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0],
+                                     epilog="env: SEED (default 1), OUT_DIR (default .)")
     parser.add_argument("n", type=int, help="number of spheres")
-    parser.add_argument("--seed", type=int, default=1)
-    parser.add_argument("--out", default=".")
     args = parser.parse_args()
     if args.n < 1:
         parser.error("N must be at least 1")
-    field = spheres(args.n, args.seed)
-    os.makedirs(args.out, exist_ok=True)
-    base = os.path.join(args.out, "field-%d" % args.n)
+    try:
+        seed = int(os.environ.get("SEED", "1"))
+    except ValueError:
+        parser.error("SEED is an integer")
+    out = os.environ.get("OUT_DIR", ".")
+    field = spheres(args.n, seed)
+    os.makedirs(out, exist_ok=True)
+    base = os.path.join(out, "field-%d" % args.n)
     with open(base + ".cfg", "w") as f:
         f.write(raytex_scene(field))
     with open(base + ".pov", "w") as f:

@@ -2,19 +2,20 @@
 # Cost sweep: `raytex bench --json` on the course scene for every size x samples per pixel x
 # sphere material (switched as the notes say), one CSV row per configuration, then the plot
 # (frame time against pixels and against spp, with linear fits) by bench/sweep_plot.py.
-# Usage: bench/sweep.sh [BUILD_DIR] [RUNS] [OUT_DIR]   (default build, 3, bench/results)
+# Usage: bench/sweep.sh [BUILD_DIR]   (default build)
 #   writes OUT_DIR/sweep.csv and OUT_DIR/sweep.png; progress goes to stderr.
-# Environment: SIZES="640x480 1920x1080 3840x2160", SPPS="1 4 16", MATERIALS="aSolidChecker
-#   aNoise ..." (default all eight) narrow the sweep; RUNS, BUILD_DIR and OUT_DIR stand in for
-#   the arguments; RAYTEX=path overrides BUILD_DIR/raytex; PYTHON (default /usr/bin/python3).
+# Environment: RUNS (default 3); OUT_DIR (default bench/results); SIZES="640x480 1920x1080
+#   3840x2160", SPPS="1 4 16", MATERIALS="aSolidChecker aNoise ..." (default all eight) narrow
+#   the sweep; RAYTEX=path overrides BUILD_DIR/raytex; PYTHON (default /usr/bin/python3).
 # The full sweep is 72 configurations, each RUNS renders of two frames (the first dispatch and a
 # timed one): on lavapipe with 2 threads roughly 15-30 minutes, the 3840x2160 spp 16 ones ~1 min each.
 set -euo pipefail
 set -f  # the lists below are split on spaces, never globbed
 src=$(cd "$(dirname "$0")/.." && pwd)
-build=${1:-${BUILD_DIR:-build}}
-runs=${2:-${RUNS:-3}}
-out=${3:-${OUT_DIR:-$src/bench/results}}
+[ $# -le 1 ] || { echo "usage: bench/sweep.sh [BUILD_DIR]   (env: RUNS, OUT_DIR, SIZES, SPPS, MATERIALS, RAYTEX, PYTHON)" >&2; exit 2; }
+build=${1:-build}
+runs=${RUNS:-3}
+out=${OUT_DIR:-$src/bench/results}
 raytex=${RAYTEX:-$build/raytex}
 python=${PYTHON:-/usr/bin/python3}
 sizes=${SIZES:-640x480 1920x1080 3840x2160}

@@ -9,7 +9,7 @@ computed against the mean (1 - SS_res / sum (y - mean y)^2, so a poor fit scores
 negative, not the inflated uncentred R^2), plus the intercept an unconstrained fit would give
 (the fixed per-frame cost, which linearity says is ~0), and last one fit over all the
 material's rows against Mpixel x spp.
-Usage: sweep_plot.py SWEEP.csv OUT.png
+Usage: bench/sweep_plot.py SWEEP.csv OUT.png
 """
 import csv
 import sys

@@ -5,11 +5,14 @@
 # by one, key-to-frame-shown time, after the idle viewer has prepared the pipelines
 # ("warm"), and with --frames keeping it busy so that it never prepares them ("cold"), with
 # Mesa's shader cache disabled.
-# Usage: bench/viewer.sh [BUILD_DIR] [RUNS] [frames|switches|all]   (one line per measurement)
+# Usage: bench/viewer.sh [BUILD_DIR] [frames|switches|all]   (default build all; env: RUNS,
+#        default 3; one line per measurement)
 set -u
+[ $# -le 2 ] || { echo "usage: bench/viewer.sh [BUILD_DIR] [frames|switches|all]   (env: RUNS)" >&2; exit 2; }
 build=${1:-build}
-runs=${2:-3}
-parts=${3:-all}
+runs=${RUNS:-3}
+parts=${2:-all}
+case "$parts" in frames|switches|all) ;; *) echo "viewer.sh: the part is frames, switches or all, not '$parts'" >&2; exit 2 ;; esac
 src=$(cd "$(dirname "$0")/.." && pwd)
 raytex=$(cd "$build" && pwd)/raytex
 export VK_ICD_FILENAMES=${VK_ICD_FILENAMES:-/usr/share/vulkan/icd.d/lvp_icd.x86_64.json}

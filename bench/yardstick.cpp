@@ -160,7 +160,26 @@ double dispatchYardstick(Yardstick& y, const Device& device, VkPipeline pipeline
   return double(ticks[1] - ticks[0]) * device.properties.limits.timestampPeriod * 1e-6;
 }
 
-// Copies the yardstick's image into its readback buffer (as readbackFrame does); waits.
+// Records a copy of a storage image the kernel wrote (layout GENERAL) into a buffer the host
+// reads, tightly packed, with the barriers on both sides; the image ends in GENERAL, so the next
+// dispatch's writes wait for the copy.
+void recordImageReadback(VkCommandBuffer cmd, VkImage image, VkBuffer buffer, uint32_t width, uint32_t height) {
+  imageBarrier(cmd, image, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_ACCESS_SHADER_WRITE_BIT,
+               VK_ACCESS_TRANSFER_READ_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT);
+  VkBufferImageCopy region{};
+  region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+  region.imageExtent = {width, height, 1};
+  vkCmdCopyImageToBuffer(cmd, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, buffer, 1, &region);
+  VkMemoryBarrier hostBarrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+  hostBarrier.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+  hostBarrier.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &hostBarrier, 0,
+                       nullptr, 0, nullptr);
+  imageBarrier(cmd, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_GENERAL, VK_ACCESS_TRANSFER_READ_BIT,
+               VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
+}
+
+// Copies the yardstick's image into its readback buffer; waits.
 const float* readbackYardstick(Yardstick& y, const Device& device) {
   VkCommandBuffer cmd = beginCommands(device);
   recordImageReadback(cmd, y.output.image, y.readback.buffer, y.width, y.height);

@@ -53,8 +53,7 @@ VkDescriptorSetLayout createTraceSetLayout(const Device& device) {
 }
 
 VkPipeline createComputePipeline(const Device& device, VkPipelineLayout layout, const uint32_t* code, size_t bytes,
-                                 const VkSpecializationInfo* specialization, VkPipelineCreateFlags flags,
-                                 VkPipelineCache cache) {
+                                 const VkSpecializationInfo* specialization, VkPipelineCreateFlags flags) {
   VkShaderModuleCreateInfo moduleInfo{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
   moduleInfo.codeSize = bytes;
   moduleInfo.pCode = code;
@@ -69,7 +68,7 @@ VkPipeline createComputePipeline(const Device& device, VkPipelineLayout layout, 
   info.stage.pSpecializationInfo = specialization;
   info.layout = layout;
   VkPipeline pipeline = VK_NULL_HANDLE;
-  VkResult result = vkCreateComputePipelines(device.device, cache, 1, &info, nullptr, &pipeline);
+  VkResult result = vkCreateComputePipelines(device.device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline);
   vkDestroyShaderModule(device.device, module, nullptr);
   VK_CHECK(result);
   return pipeline;

@@ -15,4 +15,4 @@ VkPipeline createTracePipeline(const Device& device, VkPipelineLayout layout, co
 // once the pipeline exists. Throws VulkanError.
 VkPipeline createComputePipeline(const Device& device, VkPipelineLayout layout, const uint32_t* code, size_t bytes,
                                  const VkSpecializationInfo* specialization = nullptr,
-                                 VkPipelineCreateFlags flags = 0, VkPipelineCache cache = VK_NULL_HANDLE);
+                                 VkPipelineCreateFlags flags = 0);

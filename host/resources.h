@@ -41,11 +41,6 @@ void imageBarrier(VkCommandBuffer cmd, VkImage image, VkImageLayout from, VkImag
                   VkAccessFlags srcAccess, VkAccessFlags dstAccess,
                   VkPipelineStageFlags srcStage, VkPipelineStageFlags dstStage);
 
-// Records a copy of a storage image the compute kernel wrote (layout GENERAL) into a buffer
-// the host reads, tightly packed, with the barriers on both sides; the image ends in GENERAL,
-// so the next dispatch's writes wait for the copy.
-void recordImageReadback(VkCommandBuffer cmd, VkImage image, VkBuffer buffer, uint32_t width, uint32_t height);
-
 // Allocates a primary command buffer and begins it for one submission.
 VkCommandBuffer beginCommands(const Device& device);
 // Ends, submits, waits on a fence and frees the command buffer. Optionally the submission

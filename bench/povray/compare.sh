@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # raytex against POV-Ray 3.7 on the course scene, one row per sphere material.
 #
-# Usage: bench/povray/compare.sh [BUILD_DIR] [WIDTH HEIGHT] [SPP] [RUNS]
-#        (defaults: build 1920 1080 1 3)
+# Usage: bench/povray/compare.sh [BUILD_DIR]   (default build; env: WIDTH, HEIGHT, SPP, RUNS,
+#        default 1920 1080 1 3)
 #
 # For each material (aSolidChecker ... aChecker) it renders scenes/textures.cfg with that
 # material on the sphere (scripts/course-scene.sh) with raytex, and the matching
@@ -41,11 +41,12 @@ set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)
 
+[ $# -le 1 ] || { echo "usage: bench/povray/compare.sh [BUILD_DIR]   (env: WIDTH, HEIGHT, SPP, RUNS, COMPARE_KEEP)" >&2; exit 2; }
 build=${1:-build}
-width=${2:-1920}
-height=${3:-1080}
-spp=${4:-1}
-runs=${5:-3}
+width=${WIDTH:-1920}
+height=${HEIGHT:-1080}
+spp=${SPP:-1}
+runs=${RUNS:-3}
 case "$build" in /*) ;; *) build="$PWD/$build" ;; esac
 raytex="$build/raytex"
 
