@@ -1,7 +1,7 @@
 // The GPU kernel against the float64 reference renderer (host/reference_render.cpp):
 // equal sampling must give equal images, and supersampling must converge to the
 // reference without a bias floor.
-#include "gpu_fixture.h"
+#include "support/gpu_fixture.h"
 #include "parser.h"
 #include "reference.h"
 #include "reference_render.h"

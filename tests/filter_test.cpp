@@ -12,7 +12,7 @@
 // Every image is checked for NaN/inf before anything else, and every threshold says which
 // measurement it comes from (lavapipe, Mesa 22.3.6, LLVM 15; the float64 reference). The images
 // are written to RAYTEX_BINARY_DIR/test-output/filter_<kind>_{point,box,reference}.png.
-#include "gpu_fixture.h"
+#include "support/gpu_fixture.h"
 #include "image_io.h"
 #include "output_file.h"
 #include "noise.h"

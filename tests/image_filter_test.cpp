@@ -2,7 +2,7 @@
 // cases 2-3): trilinear lookups over host-built mip chains at the footprint's level, against
 // the float64 reference (bilinear level 0, supersampled: the box-filtered truth). Rendered on
 // a Vulkan device (lavapipe in CI) with validation on; every image is checked for NaN/inf.
-#include "gpu_fixture.h"
+#include "support/gpu_fixture.h"
 #include "output_file.h"
 #include "image_load.h"
 #include "parser.h"

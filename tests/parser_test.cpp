@@ -3,6 +3,9 @@
 #include "parser.h"
 #include "texture_kinds.h"
 
+#include "support/course_scene.h"
+#include "support/files.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -23,18 +26,6 @@ namespace {
 const std::string kSource = RAYTEX_SOURCE_DIR;
 const std::string kTexturesCfg = kSource + "/scenes/textures.cfg";
 
-std::string readText(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
-void writeText(const fs::path& path, const std::string& text) {
-  fs::create_directories(path.parent_path());
-  std::ofstream(path, std::ios::binary) << text;
-}
-
 // The message of the SceneError that parsing `text` as `file` throws, or "<no error>".
 std::string errorOf(const std::string& text, const std::string& file = "t.cfg") {
   try {
@@ -54,12 +45,6 @@ std::string fileErrorOf(const std::string& path) {
   return "<no error>";
 }
 
-int materialIndex(const Scene& s, const std::string& name) {
-  for (size_t i = 0; i < s.materials.size(); ++i)
-    if (s.materials[i].name == name) return int(i);
-  return -2;
-}
-
 void expectVec(const glm::vec3& v, float x, float y, float z) {
   EXPECT_FLOAT_EQ(v.x, x);
   EXPECT_FLOAT_EQ(v.y, y);
@@ -70,10 +55,7 @@ void expectVec(const glm::vec3& v, float x, float y, float z) {
 class ParserFiles : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("raytex_parser_test_" + std::to_string(getpid()) + "_" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
+    dir_ = freshTempDir(std::string("parser_test_") + ::testing::UnitTest::GetInstance()->current_test_info()->name());
   }
   void TearDown() override {
     std::error_code ec;
@@ -81,7 +63,7 @@ class ParserFiles : public ::testing::Test {
   }
   std::string path(const std::string& name) const { return (dir_ / name).string(); }
   std::string write(const std::string& name, const std::string& text) const {
-    writeText(dir_ / name, text);
+    writeFile(dir_ / name, text);
     return path(name);
   }
   fs::path dir_;
@@ -193,7 +175,7 @@ TEST(ParserScenes, TexturesCfg) {
 }
 
 TEST(ParserScenes, SwitchingTheSphereMaterialByCommenting) {
-  const std::string original = readText(kTexturesCfg);
+  const std::string original = readFile(kTexturesCfg);
   size_t sphere = original.find("sphere {");
   ASSERT_NE(sphere, std::string::npos);
   for (const char* name : kAlternatives) {
@@ -214,7 +196,7 @@ TEST(ParserScenes, SwitchingTheSphereMaterialByCommenting) {
 }
 
 TEST(ParserScenes, LastMaterialNamedWins) {
-  std::string text = readText(kTexturesCfg);
+  std::string text = readFile(kTexturesCfg);
   size_t at = text.find("// aMarble;");
   ASSERT_NE(at, std::string::npos);
   text.erase(at, 3);  // now both aSolidChecker and aMarble are named
@@ -823,7 +805,7 @@ TEST_F(ParserAllowRead, TwoTreesAndRelativeDirectories) {
 // ---------------------------------------------------------------- robustness
 
 TEST(ParserRobustness, TruncatedAndMutatedInputsOnlyEverThrowSceneError) {
-  const std::string original = readText(kTexturesCfg);
+  const std::string original = readFile(kTexturesCfg);
   ASSERT_GT(original.size(), 100u);
   std::mt19937 rng(12345);
   const std::string interesting = "{}();,=\"/*#-+.eE0123456789aZ_ \n\t\r";

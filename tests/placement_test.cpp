@@ -1,12 +1,12 @@
 // Upright images and texture placement (docs/textures.md, "Image orientation" and "Texture
 // placement"), on a Vulkan device (lavapipe in CI) with validation on, against the float64
 // oracle (host/mapping.cpp, reference*.cpp) and against the orientation rule itself.
-#include "gpu_fixture.h"
+#include "support/gpu_fixture.h"
 #include "output_file.h"
 #include "parser.h"
 #include "reference.h"
 #include "reference_render.h"
-#include "temp_dir.h"
+#include "support/files.h"
 #include "texture.h"
 
 #include <glm/geometric.hpp>

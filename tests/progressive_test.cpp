@@ -1,7 +1,7 @@
 // Progressive rendering (the viewer): N x N samples added one per dispatch must end
 // bit-identical to the single dispatch that loops over them, for point and box filtering;
 // the means on the way are the means of the samples so far.
-#include "gpu_fixture.h"
+#include "support/gpu_fixture.h"
 #include "gpu_scene.h"
 #include "parser.h"
 #include "renderer.h"

@@ -3,7 +3,7 @@
 // - per-pixel checks of the kernel's texture coordinates and texture colours
 //   against the CPU double-precision reference (host/reference.cpp, mapping.cpp,
 //   texture.cpp), independent of any golden.
-#include "gpu_fixture.h"
+#include "support/gpu_fixture.h"
 #include "gpu_scene.h"
 #include "image_io.h"
 #include "output_file.h"

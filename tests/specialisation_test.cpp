@@ -3,7 +3,7 @@
 // loops bounded by Frame's counts. Scenes at and over MAX_SPECIALISED_COUNT cover both the
 // unrolled and the run-time loops. Kernels built around a scene's values (bakeScene, what
 // raytex render uses) must render exactly what the kernel reading them from buffers renders.
-#include "gpu_fixture.h"
+#include "support/gpu_fixture.h"
 #include "gpu_scene.h"
 #include "parser.h"
 

@@ -6,7 +6,7 @@
 // quantisation (an 8-bit conversion of NaN is undefined and may hide it). Each case also
 // has a numeric check against the CPU double reference (host/reference.h) or an
 // analytic truth; every threshold says where it comes from.
-#include "gpu_fixture.h"
+#include "support/gpu_fixture.h"
 #include "reference.h"
 #include "reference_render.h"
 #include "texture.h"
