@@ -4,9 +4,31 @@
 
 #include <fstream>
 #include <iterator>
+#include <system_error>
+#include <vector>
 
 namespace fs = std::filesystem;
 
+namespace {
+
+// The directories freshTempDir made, removed when the process that made them exits (a forked
+// child that exits leaves them to its parent).
+struct MadeDirs {
+  pid_t owner = getpid();
+  std::vector<fs::path> dirs;
+  ~MadeDirs() {
+    if (getpid() != owner) return;
+    std::error_code ignored;
+    for (const fs::path& dir : dirs) fs::remove_all(dir, ignored);
+  }
+};
+
+MadeDirs& madeDirs() {
+  static MadeDirs made;
+  return made;
+}
+
+}  // namespace
 
 std::string readFile(const fs::path& path) {
   std::ifstream in(path, std::ios::binary);
@@ -22,6 +44,7 @@ fs::path freshTempDir(const std::string& name) {
   fs::path dir = fs::temp_directory_path() / ("raytex_" + name + "_" + std::to_string(getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
+  madeDirs().dirs.push_back(dir);
   return dir;
 }
 

@@ -11,8 +11,9 @@ std::string readFile(const std::filesystem::path& path);
 // Writes `bytes` to `path` in binary, creating its parent directories.
 void writeFile(const std::filesystem::path& path, const std::string& bytes);
 
-// temp_directory_path()/raytex_NAME_PID, emptied and created anew. The process id keeps
-// tests that share a NAME apart when ctest runs them in parallel (each test is a process).
+// temp_directory_path()/raytex_NAME_PID, emptied and created anew, and removed when the test
+// process exits. The process id keeps tests that share a NAME apart when ctest runs them in
+// parallel (each test is a process).
 std::filesystem::path freshTempDir(const std::string& name);
 
 // RAYTEX_BINARY_DIR/test-output, created: the one place outside a temporary directory where
