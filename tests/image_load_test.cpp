@@ -162,6 +162,12 @@ TEST(ImageLoad, TruncatedJpegIsRefused) {
 TEST(ImageLoad, TruncatedPngIsRefusedAtEveryLength) {
   std::string png = readFile(kSourceDir + "/textures/uv_grid.png");
   fs::path dir = freshTempDir("image_load_cut");
+  // The control: the whole file decodes, so each refusal below is the cut's doing (an empty or
+  // missing file would be refused at every length too).
+  writeFile(dir / "whole.png", png);
+  ImageRGBA8 whole;
+  std::string wholeError;
+  ASSERT_TRUE(loadImage((dir / "whole.png").string(), &whole, &wholeError)) << wholeError;
   for (size_t length : {size_t(0), size_t(8), size_t(30), size_t(100), png.size() / 2, png.size() - 13, png.size() - 1}) {
     writeFile(dir / "cut.png", png.substr(0, length));
     ImageRGBA8 image;
