@@ -66,7 +66,14 @@ INSTANTIATE_TEST_SUITE_P(Kinds, ProgressiveEqualsLoop,
                          ::testing::Values(Case{"aSolidChecker", 1, FILTER_POINT}, Case{"aSolidChecker", 2, FILTER_POINT},
                                            Case{"aSolidChecker", 3, FILTER_POINT}, Case{"aMarble", 4, FILTER_POINT},
                                            Case{"anImage", 3, FILTER_POINT}, Case{"aSolidChecker", 3, FILTER_BOX},
-                                           Case{"aTurbulence", 2, FILTER_BOX}, Case{"anImage", 2, FILTER_BOX}));
+                                           Case{"aTurbulence", 2, FILTER_BOX}, Case{"anImage", 2, FILTER_BOX}),
+                         // Named by the case (aMarble_4x4_point), not by its bytes: the default
+                         // name prints the material pointer, which changes from build to build.
+                         [](const ::testing::TestParamInfo<Case>& info) {
+                           const Case& c = info.param;
+                           return std::string(c.material) + "_" + std::to_string(c.samplesPerSide) + "x" +
+                                  std::to_string(c.samplesPerSide) + (c.filter == FILTER_BOX ? "_box" : "_point");
+                         });
 
 // The mean after k samples is the mean of the first k samples: the first image is the one
 // sample at the centre of the top-left cell, and restarting at sample 0 forgets the old sums.
