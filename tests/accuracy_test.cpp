@@ -1,7 +1,8 @@
 // The GPU kernel against the float64 reference renderer (host/reference_render.cpp):
 // equal sampling must give equal images, and supersampling must converge to the
 // reference without a bias floor.
-#include "gpu_fixture.h"
+#include "support/course_scene.h"
+#include "support/gpu_fixture.h"
 #include "parser.h"
 #include "reference.h"
 #include "reference_render.h"
@@ -9,19 +10,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <fstream>
-#include <sstream>
 
 namespace {
-
-const std::string kSourceDir = RAYTEX_SOURCE_DIR;
-
-std::string readFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
 
 // The checker floor toward the horizon (accuracy notes F4: camera 1 above the floor, 8 degrees
 // down, 60 degree fov, unit checks), lit by the ambient term alone so pixels are texture.
@@ -41,13 +31,8 @@ class AccuracyTest : public RenderTest, public ::testing::WithParamInterface<con
 // Same scene, same 2x2 stratified sample positions: the float32 kernel and the float64
 // reference agree except where a sample lands on the other side of an edge.
 TEST_P(AccuracyTest, GpuMatchesReferenceAtEqualSampling) {
-  std::string text = readFile(kSourceDir + "/scenes/textures.cfg");
   const std::string material = GetParam();
-  if (material != "aSolidChecker") {
-    text.replace(text.find("    aSolidChecker;"), 18, "    // aSolidChecker;");
-    text.replace(text.find("// " + material + ";"), material.size() + 4, material + ";");
-  }
-  Scene scene = parseSceneText(text, kSourceDir + "/scenes/textures.cfg");
+  Scene scene = courseScene(material);
   const int w = 128, h = 96, n = 2;
   std::vector<float> gpu = render(scene, w, h, OUTPUT_SHADED, n);
   ReferenceImage ref = renderReference(scene, w, h, n);

@@ -12,7 +12,10 @@
 // Every image is checked for NaN/inf before anything else, and every threshold says which
 // measurement it comes from (lavapipe, Mesa 22.3.6, LLVM 15; the float64 reference). The images
 // are written to RAYTEX_BINARY_DIR/test-output/filter_<kind>_{point,box,reference}.png.
-#include "gpu_fixture.h"
+#include "support/course_scene.h"
+#include "support/files.h"
+#include "support/format.h"
+#include "support/gpu_fixture.h"
 #include "image_io.h"
 #include "output_file.h"
 #include "noise.h"
@@ -132,24 +135,13 @@ double meanOf(const ReferenceImage& ref, const std::vector<bool>& mask) {
   return n ? sum / double(n) : 0.0;
 }
 
-std::string fmt(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.4f", v);
-  return buf;
-}
-
 void writeImage(const std::string& name, const std::vector<float>& rgba) {
-  std::string dir = std::string(RAYTEX_BINARY_DIR) + "/test-output";
-  std::filesystem::create_directories(dir);
-  writePngAtomic(dir + "/" + name + ".png", encodeSrgb(rgba.data(), kWidth, kHeight));
+  writePngAtomic((testOutputDir() / (name + ".png")).string(), encodeSrgb(rgba.data(), kWidth, kHeight));
 }
 
 // A float constant `name = value;` from a shader source.
 double shaderConstant(const std::string& file, const std::string& name) {
-  std::ifstream in(kSourceDir + "/shaders/" + file);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  std::string text = ss.str();
+  const std::string text = readFile(kSourceDir + "/shaders/" + file);
   size_t at = text.find("const float " + name + " = ");
   if (at == std::string::npos) return NAN;
   return std::stod(text.substr(text.find('=', at) + 1));
@@ -300,25 +292,13 @@ TEST_F(RenderTest, FilteredNoiseKindsTendToPointSamplingUnderMagnification) {
 
 // --- robustness --------------------------------------------------------------------------------
 
-std::string readFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
 // The course scene with each noise kind on the sphere (footprints through the sphere's
 // mapping, poles included), and the horizon plane seen from exactly its own height (the
 // differential rays of the middle rows are parallel to it: FOOTPRINT_MAX widths). No NaN/inf;
 // on the course scene, where the sphere is magnified, the box stays close to point sampling.
 TEST_F(RenderTest, FilteredNoiseKindsAreFiniteOnSpheresAndGrazingPlanes) {
-  const std::string course = readFile(kSourceDir + "/scenes/textures.cfg");
   for (const char* material : {"aNoise", "aMarble", "aWood", "aTurbulence", "aDturbulence"}) {
-    std::string text = course;
-    text.replace(text.find("    aSolidChecker;"), 18, "    // aSolidChecker;");
-    text.replace(text.find(std::string("// ") + material + ";"), std::string(material).size() + 4,
-                 std::string(material) + ";");
-    Scene scene = parseSceneText(text, kSourceDir + "/scenes/textures.cfg");
+    Scene scene = courseScene(material);
     std::vector<float> point = render(scene, 160, 120, OUTPUT_SHADED, 2, FILTER_POINT);
     std::vector<float> box = render(scene, 160, 120, OUTPUT_SHADED, 2, FILTER_BOX);
     ASSERT_EQ(countNonFinite(point), 0u) << material;

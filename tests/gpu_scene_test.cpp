@@ -3,6 +3,8 @@
 #include "scene_limits.h"
 #include "parser.h"
 
+#include "support/files.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -177,10 +179,8 @@ TEST(GpuScene, CameraFrameFollowsFovAndAspect) {
 
 TEST(GpuScene, MissingOrBrokenImageIsASceneErrorAtTheFileKey) {
   namespace fs = std::filesystem;
-  fs::path dir = fs::temp_directory_path() / "raytex_gpu_scene_images";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  std::ofstream(dir / "broken.png") << "PNG? no";
+  fs::path dir = freshTempDir("gpu_scene_images");
+  writeFile(dir / "broken.png", "PNG? no");
   for (const char* file : {"missing.png", "broken.png"}) {
     std::string text = std::string("material m {\n  texture = image {\n    file = \"") + file +
                        "\";\n  };\n}\nsphere { center = (0,0,0); radius = 1; m; }\n";

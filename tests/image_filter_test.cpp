@@ -2,12 +2,16 @@
 // cases 2-3): trilinear lookups over host-built mip chains at the footprint's level, against
 // the float64 reference (bilinear level 0, supersampled: the box-filtered truth). Rendered on
 // a Vulkan device (lavapipe in CI) with validation on; every image is checked for NaN/inf.
-#include "gpu_fixture.h"
-#include "output_file.h"
 #include "image_load.h"
+#include "output_file.h"
 #include "parser.h"
 #include "reference.h"
 #include "reference_render.h"
+
+#include "support/files.h"
+#include "support/format.h"
+#include "support/gpu_fixture.h"
+#include "support/reference_pixels.h"
 
 #include <gtest/gtest.h>
 
@@ -49,36 +53,11 @@ Scene sphereScene(const std::string& image, const std::string& eye, const std::s
                        "sphere { center = (0, 0, 0); radius = 1; m; }\n");
 }
 
-// Pixels whose centre and four corners all hit the object of kind `kind` (no silhouette
-// pixels: geometric aliasing is not what the texture filter is for).
-std::vector<bool> interiorMask(const Scene& scene, int w, int h, int kind) {
-  std::vector<bool> mask(size_t(w) * h, false);
-  const glm::dvec3 eye(scene.camera.eye);
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) {
-      ReferenceHit centre = referenceClosestHit(scene, eye, referenceRayDirection(scene.camera, w, h, x, y));
-      bool inside = centre.kind == kind;
-      for (double dy : {-0.5, 0.5})
-        for (double dx : {-0.5, 0.5})
-          inside = inside &&
-                   referenceClosestHit(scene, eye, referenceRayDirection(scene.camera, w, h, x, y, dx, dy)).kind == kind;
-      mask[size_t(y) * w + x] = inside;
-    }
-  return mask;
-}
-
-
 size_t countMask(const std::vector<bool>& mask) { return size_t(std::count(mask.begin(), mask.end(), true)); }
 
-std::string fmt(double v) {
-  char buf[32];
-  snprintf(buf, sizeof buf, "%.4f", v);
-  return buf;
-}
-
-// PNGs for looking at (build dir, not checked): RAYTEX_BINARY_DIR/image_filter_<name>.png.
+// PNGs for looking at (not read back): build/test-output/image_filter_<name>.png.
 void writeImage(const std::string& name, const std::vector<float>& rgba, int w, int h) {
-  writePngAtomic(std::string(RAYTEX_BINARY_DIR) + "/image_filter_" + name + ".png", encodeSrgb(rgba.data(), w, h));
+  writePngAtomic((testOutputDir() / ("image_filter_" + name + ".png")).string(), encodeSrgb(rgba.data(), w, h));
 }
 
 class ImageFilterTest : public RenderTest {};

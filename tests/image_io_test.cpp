@@ -1,7 +1,7 @@
 #include "image_io.h"
 #include "image_load.h"
 #include "output_file.h"
-#include "temp_dir.h"
+#include "support/files.h"
 
 #include <gtest/gtest.h>
 
@@ -12,8 +12,6 @@
 namespace fs = std::filesystem;
 
 namespace {
-
-fs::path tempDir(const std::string& name) { return freshTempDir("image_io_" + name); }
 
 TEST(ImageIo, SrgbTransferFunctionRoundTrips) {
   // Reference points of the sRGB curve (IEC 61966-2-1).
@@ -44,7 +42,7 @@ TEST(ImageIo, EncodeSrgbMatchesFormulaClampsAndCountsNonFinite) {
 }
 
 TEST(ImageIo, WritesPngThatDecodesToTheSamePixels) {
-  fs::path dir = tempDir("roundtrip");
+  fs::path dir = freshTempDir("image_io_roundtrip");
   ImageRGBA8 img;
   img.width = 7;
   img.height = 5;
@@ -79,7 +77,7 @@ TEST(ImageIo, FailedWriteLeavesNoFileAndNamesThePath) {
 }
 
 TEST(ImageIo, LoadReportsMissingAndUndecodableFiles) {
-  fs::path dir = tempDir("load");
+  fs::path dir = freshTempDir("image_io_load");
   ImageRGBA8 img;
   std::string error;
   EXPECT_FALSE(loadImage((dir / "missing.png").string(), &img, &error));

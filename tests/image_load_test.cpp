@@ -8,7 +8,7 @@
 #include "parser.h"
 #include "reference_render.h"
 #include "scene_images.h"
-#include "temp_dir.h"
+#include "support/files.h"
 
 #include <gtest/gtest.h>
 #include <zlib.h>
@@ -28,8 +28,6 @@ namespace {
 const std::string kSourceDir = RAYTEX_SOURCE_DIR;
 const std::string kHostile = kSourceDir + "/tests/malformed/images/";
 
-fs::path tempDir(const std::string& name) { return freshTempDir("image_load_" + name); }
-
 std::string loadError(const std::string& path) {
   ImageRGBA8 image;
   std::string error;
@@ -38,12 +36,6 @@ std::string loadError(const std::string& path) {
   return error;
 }
 
-void writeBytes(const fs::path& path, const std::string& bytes) { std::ofstream(path, std::ios::binary) << bytes; }
-
-std::string readBytes(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
 
 // A PNG with 8-bit samples, each row given without its filter byte.
 std::string pngFile(int width, int height, int colorType, const std::string& pixels, const std::string& plte = "",
@@ -76,7 +68,7 @@ TEST(ImageLoad, OtherFormatsAreRefusedByName) {
   EXPECT_NE(loadError(kHostile + "header-only.bmp").find("is a BMP image"), std::string::npos);
   EXPECT_NE(loadError(kHostile + "header-only.tga").find("is not named .png, .jpg or .jpeg"), std::string::npos);
   // The same GIF under a PNG name: the content decides, and it is named.
-  fs::path dir = tempDir("formats");
+  fs::path dir = freshTempDir("image_load_formats");
   fs::copy_file(kHostile + "canvas-16384.gif", dir / "canvas.png");
   EXPECT_NE(loadError((dir / "canvas.png").string()).find("is a GIF image"), std::string::npos);
 }
@@ -85,13 +77,13 @@ TEST(ImageLoad, ContentMustMatchTheExtension) {
   EXPECT_NE(loadError(kHostile + "tga-named.png").find("'" + kHostile + "tga-named.png': not a PNG file"),
             std::string::npos);
   EXPECT_NE(loadError(kHostile + "jpeg-named.png").find("is a JPEG image named .png"), std::string::npos);
-  fs::path dir = tempDir("mismatch");
+  fs::path dir = freshTempDir("image_load_mismatch");
   fs::copy_file(kSourceDir + "/textures/uv_grid.png", dir / "grid.jpg");
   EXPECT_NE(loadError((dir / "grid.jpg").string()).find("is a PNG image named .jpg"), std::string::npos);
 }
 
 TEST(ImageLoad, ExtensionsInAnyCase) {
-  fs::path dir = tempDir("case");
+  fs::path dir = freshTempDir("image_load_case");
   fs::copy_file(kSourceDir + "/textures/uv_grid.png", dir / "GRID.PNG");
   fs::copy_file(kSourceDir + "/textures/earth.jpg", dir / "earth.JPEG");
   fs::copy_file(kSourceDir + "/textures/earth.jpg", dir / "earth.Jpg");
@@ -136,8 +128,8 @@ TEST(ImageLoad, PaletteIndexPastThePaletteIsRefused) {
 // Valid palette images expand to the palette's colours, tRNS giving alpha (255 past its end),
 // at every bit depth's byte layout (8 bits here).
 TEST(ImageLoad, PaletteExpandsWithTransparency) {
-  fs::path dir = tempDir("palette");
-  writeBytes(dir / "p.png", pngFile(3, 2, 3, std::string{0, 1, 2, 2, 1, 0},
+  fs::path dir = freshTempDir("image_load_palette");
+  writeFile(dir / "p.png", pngFile(3, 2, 3, std::string{0, 1, 2, 2, 1, 0},
                                     std::string("\xff\x00\x00\x00\xff\x00\x00\x00\xff", 9),
                                     std::string("\x80", 1)));
   ImageRGBA8 image;
@@ -149,9 +141,9 @@ TEST(ImageLoad, PaletteExpandsWithTransparency) {
 }
 
 TEST(ImageLoad, GrayAndRgbBecomeOpaqueRgba) {
-  fs::path dir = tempDir("gray");
-  writeBytes(dir / "g.png", pngFile(2, 1, 0, std::string{10, char(200)}));
-  writeBytes(dir / "c.png", pngFile(1, 1, 2, std::string{1, 2, 3}));
+  fs::path dir = freshTempDir("image_load_gray");
+  writeFile(dir / "g.png", pngFile(2, 1, 0, std::string{10, char(200)}));
+  writeFile(dir / "c.png", pngFile(1, 1, 2, std::string{1, 2, 3}));
   ImageRGBA8 image;
   std::string error;
   ASSERT_TRUE(loadImage((dir / "g.png").string(), &image, &error)) << error;
@@ -168,10 +160,16 @@ TEST(ImageLoad, TruncatedJpegIsRefused) {
 
 // Every cut of a PNG before its IEND is refused (the last 12 bytes are the IEND chunk).
 TEST(ImageLoad, TruncatedPngIsRefusedAtEveryLength) {
-  std::string png = readBytes(kSourceDir + "/textures/uv_grid.png");
-  fs::path dir = tempDir("cut");
+  std::string png = readFile(kSourceDir + "/textures/uv_grid.png");
+  fs::path dir = freshTempDir("image_load_cut");
+  // The control: the whole file decodes, so each refusal below is the cut's doing (an empty or
+  // missing file would be refused at every length too).
+  writeFile(dir / "whole.png", png);
+  ImageRGBA8 whole;
+  std::string wholeError;
+  ASSERT_TRUE(loadImage((dir / "whole.png").string(), &whole, &wholeError)) << wholeError;
   for (size_t length : {size_t(0), size_t(8), size_t(30), size_t(100), png.size() / 2, png.size() - 13, png.size() - 1}) {
-    writeBytes(dir / "cut.png", png.substr(0, length));
+    writeFile(dir / "cut.png", png.substr(0, length));
     ImageRGBA8 image;
     std::string error;
     EXPECT_FALSE(loadImage((dir / "cut.png").string(), &image, &error)) << length << " bytes";
@@ -181,7 +179,7 @@ TEST(ImageLoad, TruncatedPngIsRefusedAtEveryLength) {
 // A FIFO (or any non-regular file) as an image is refused at once: opening it for reading would
 // block until a writer came.
 TEST(ImageLoad, FifoIsRefusedWithoutBlocking) {
-  fs::path dir = tempDir("fifo");
+  fs::path dir = freshTempDir("image_load_fifo");
   std::string fifo = (dir / "pipe.png").string();
   ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
   auto result = std::make_shared<std::promise<std::string>>();

@@ -1,13 +1,14 @@
 // Images at their own size (each its own texture and mip chain, BINDING_IMAGES) and
 // `wrap = clamp`, rendered on a Vulkan device (lavapipe in CI) with validation on, against the
 // float64 reference.
-#include "gpu_fixture.h"
+#include "support/gpu_fixture.h"
 #include "image_io.h"
 #include "output_file.h"
 #include "parser.h"
 #include "reference.h"
 #include "reference_render.h"
-#include "temp_dir.h"
+#include "support/files.h"
+#include "support/reference_pixels.h"
 
 #include <gtest/gtest.h>
 
@@ -32,22 +33,6 @@ std::string flatImage(const std::string& name, const std::string& file, const st
 Scene sceneFromText(const std::string& text) {
   return parseSceneText("ambient_light = (1, 1, 1);\nbackground = (0.5, 0.5, 0.5);\n" + text,
                         kSourceDir + "/scenes/image_size_test.cfg");
-}
-
-// Pixels whose centre and four corners all hit what `keep` accepts.
-template <typename Keep>
-std::vector<bool> interiorMask(const Scene& scene, int w, int h, Keep keep) {
-  std::vector<bool> mask(size_t(w) * h, false);
-  const glm::dvec3 eye(scene.camera.eye);
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) {
-      bool inside = keep(referenceClosestHit(scene, eye, referenceRayDirection(scene.camera, w, h, x, y)));
-      for (double dy : {-0.5, 0.5})
-        for (double dx : {-0.5, 0.5})
-          inside = inside && keep(referenceClosestHit(scene, eye, referenceRayDirection(scene.camera, w, h, x, y, dx, dy)));
-      mask[size_t(y) * w + x] = inside;
-    }
-  return mask;
 }
 
 // The largest channel difference of two renders over the pixels in `mask`.

@@ -2,7 +2,7 @@
 // on a sphere and a floor, against its float64 oracle (host/texture.cpp): the point kernel's
 // texture colour per pixel, and the box kernel's image closer to the supersampled reference
 // than the point kernel's. A new kind is tested here with no edit.
-#include "gpu_fixture.h"
+#include "support/gpu_fixture.h"
 #include "parser.h"
 #include "reference.h"
 #include "reference_render.h"

@@ -3,7 +3,7 @@
 #include "standard_output.h"
 #include "output_file.h"
 #include "parser.h"
-#include "temp_dir.h"
+#include "support/files.h"
 
 #include <gtest/gtest.h>
 
@@ -25,20 +25,11 @@ namespace fs = std::filesystem;
 
 namespace {
 
-fs::path tempDir(const std::string& name) { return freshTempDir("output_file_" + name); }
-
 std::vector<uint8_t> someBytes(size_t n) {
   std::vector<uint8_t> bytes(n);
   for (size_t i = 0; i < n; ++i) bytes[i] = uint8_t(i * 31 + 7);
   return bytes;
 }
-
-std::string readFile(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
-
-void writeText(const fs::path& path, const std::string& text) { std::ofstream(path, std::ios::binary) << text; }
 
 size_t entries(const fs::path& dir) { return size_t(std::distance(fs::directory_iterator(dir), {})); }
 
@@ -58,7 +49,7 @@ std::string writeError(const fs::path& path, const std::vector<uint8_t>& bytes) 
   GTEST_SKIP() << "cannot mknod " << (path) << " (" << strerror(errno) << "): not root?"
 
 TEST(OutputFile, WritesThroughToANullDeviceAndKeepsIt) {
-  fs::path dir = tempDir("null");
+  fs::path dir = freshTempDir("output_file_null");
   fs::path null = dir / "null";
   MAKE_CHAR_DEVICE(null, 3);
   EXPECT_EQ(writeError(null, someBytes(1000)), "");
@@ -67,7 +58,7 @@ TEST(OutputFile, WritesThroughToANullDeviceAndKeepsIt) {
 }
 
 TEST(OutputFile, AFullDeviceIsAWriteErrorAndStaysADevice) {
-  fs::path dir = tempDir("full");
+  fs::path dir = freshTempDir("output_file_full");
   fs::path full = dir / "full";
   MAKE_CHAR_DEVICE(full, 7);
   EXPECT_EQ(writeError(full, someBytes(1000)), "cannot write '" + full.string() + "': No space left on device");
@@ -76,7 +67,7 @@ TEST(OutputFile, AFullDeviceIsAWriteErrorAndStaysADevice) {
 }
 
 TEST(OutputFile, AFifoWithNoReaderIsAnErrorNotAWait) {
-  fs::path dir = tempDir("fifo");
+  fs::path dir = freshTempDir("output_file_fifo");
   fs::path fifo = dir / "fifo";
   ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
   EXPECT_EQ(writeError(fifo, someBytes(100)), "cannot write '" + fifo.string() + "': no process is reading it");
@@ -84,7 +75,7 @@ TEST(OutputFile, AFifoWithNoReaderIsAnErrorNotAWait) {
 }
 
 TEST(OutputFile, AFifoWithAReaderGetsTheBytes) {
-  fs::path dir = tempDir("fifo_reader");
+  fs::path dir = freshTempDir("output_file_fifo_reader");
   fs::path fifo = dir / "fifo";
   ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
   int reader = open(fifo.c_str(), O_RDONLY | O_NONBLOCK);
@@ -100,9 +91,9 @@ TEST(OutputFile, AFifoWithAReaderGetsTheBytes) {
 }
 
 TEST(OutputFile, ASymlinkIsFollowedAndItsTargetReplaced) {
-  fs::path dir = tempDir("symlink");
+  fs::path dir = freshTempDir("output_file_symlink");
   fs::create_directories(dir / "real");
-  writeText(dir / "real" / "a.png", "old");
+  writeFile(dir / "real" / "a.png", "old");
   fs::create_symlink("real/a.png", dir / "link.png");
   std::vector<uint8_t> bytes = someBytes(50);
   EXPECT_EQ(writeError(dir / "link.png", bytes), "");
@@ -112,8 +103,8 @@ TEST(OutputFile, ASymlinkIsFollowedAndItsTargetReplaced) {
 }
 
 TEST(OutputFile, AnExistingFileKeepsItsModeAndANewOneFollowsTheUmask) {
-  fs::path dir = tempDir("mode");
-  writeText(dir / "private.png", "old");
+  fs::path dir = freshTempDir("output_file_mode");
+  writeFile(dir / "private.png", "old");
   ASSERT_EQ(chmod((dir / "private.png").c_str(), 0600), 0);
   EXPECT_EQ(writeError(dir / "private.png", someBytes(10)), "");
   struct stat st;
@@ -128,7 +119,7 @@ TEST(OutputFile, AnExistingFileKeepsItsModeAndANewOneFollowsTheUmask) {
 }
 
 TEST(OutputFile, NamesUpTo255BytesAreWritten) {
-  fs::path dir = tempDir("long");
+  fs::path dir = freshTempDir("output_file_long");
   for (size_t length : {245, 250, 255}) {
     std::string name = std::string(length - 4, 'n') + ".png";
     std::vector<uint8_t> bytes = someBytes(length);
@@ -176,8 +167,8 @@ int signalInTheMiddleOfAWrite(const fs::path& path, int sig, bool* tempSeen) {
 
 TEST(OutputFile, ASignalDuringTheWriteRemovesTheTempFileAndEndsWithTheSignal) {
   for (int sig : {SIGINT, SIGTERM, SIGHUP}) {
-    fs::path dir = tempDir("signal");
-    writeText(dir / "out.png", "old");
+    fs::path dir = freshTempDir("output_file_signal");
+    writeFile(dir / "out.png", "old");
     bool tempSeen = false;
     int status = signalInTheMiddleOfAWrite(dir / "out.png", sig, &tempSeen);
     EXPECT_TRUE(tempSeen) << strsignal(sig);
@@ -188,8 +179,8 @@ TEST(OutputFile, ASignalDuringTheWriteRemovesTheTempFileAndEndsWithTheSignal) {
 }
 
 TEST(OutputFile, AFileSizeLimitIsAWriteErrorThatLeavesNoTempFile) {
-  fs::path dir = tempDir("fsize");
-  writeText(dir / "out.png", "old");
+  fs::path dir = freshTempDir("output_file_fsize");
+  writeFile(dir / "out.png", "old");
   pid_t child = fork();
   if (child == 0) {
     signal(SIGXFSZ, SIG_DFL);
@@ -206,10 +197,10 @@ TEST(OutputFile, AFileSizeLimitIsAWriteErrorThatLeavesNoTempFile) {
 }
 
 TEST(OutputFile, TheSceneItsIncludesAndImagesAreNotOutputs) {
-  fs::path dir = tempDir("clash");
-  writeText(dir / "inc.cfg", "material m { texture = image { file = \"tex.png\"; } }\n");
-  writeText(dir / "tex.png", "not read here");
-  writeText(dir / "s.cfg", "#include \"inc.cfg\"\nsphere { m; }\n");
+  fs::path dir = freshTempDir("output_file_clash");
+  writeFile(dir / "inc.cfg", "material m { texture = image { file = \"tex.png\"; } }\n");
+  writeFile(dir / "tex.png", "not read here");
+  writeFile(dir / "s.cfg", "#include \"inc.cfg\"\nsphere { m; }\n");
   Scene scene = parseSceneFile((dir / "s.cfg").string());
   auto clash = [&](const fs::path& p) { return outputClash(p.string(), scene); };
   EXPECT_EQ(clash(dir / "s.cfg"), "refusing to write '" + (dir / "s.cfg").string() + "': it is the scene file");
@@ -221,7 +212,7 @@ TEST(OutputFile, TheSceneItsIncludesAndImagesAreNotOutputs) {
   fs::create_symlink("inc.cfg", dir / "soft.png");
   EXPECT_NE(clash(dir / "hard.cfg"), "");
   EXPECT_NE(clash(dir / "soft.png"), "");
-  writeText(dir / "other.png", "x");
+  writeFile(dir / "other.png", "x");
   EXPECT_EQ(clash(dir / "other.png"), "");
   EXPECT_EQ(clash(dir / "new.png"), "");
   EXPECT_EQ(clash(""), "");
@@ -243,7 +234,7 @@ TEST(Errors, ALocatedErrorIsPrintedAsItIsAndAnyOtherBehindTheProgramName) {
 }
 
 TEST(Errors, AFailedWriteToTheOutputStreamIsAnIoError) {
-  fs::path dir = tempDir("stdout");
+  fs::path dir = freshTempDir("output_file_stdout");
   fs::path full = dir / "full";
   MAKE_CHAR_DEVICE(full, 7);
   FILE* out = fopen(full.c_str(), "w");

@@ -1,12 +1,13 @@
 // Upright images and texture placement (docs/textures.md, "Image orientation" and "Texture
 // placement"), on a Vulkan device (lavapipe in CI) with validation on, against the float64
 // oracle (host/mapping.cpp, reference*.cpp) and against the orientation rule itself.
-#include "gpu_fixture.h"
+#include "support/gpu_fixture.h"
 #include "output_file.h"
 #include "parser.h"
 #include "reference.h"
 #include "reference_render.h"
-#include "temp_dir.h"
+#include "support/course_scene.h"
+#include "support/files.h"
 #include "texture.h"
 
 #include <glm/geometric.hpp>
@@ -289,12 +290,10 @@ TEST_F(PlacementTest, RotatedScaledCheckerBoxFilterMatchesSupersampledReference)
 // (SPEC_TEXTURE_PLACEMENT on: the identity quaternion, tex_scale 1 and zero offsets read from
 // the uniform blocks) or is specialised without it, for the course materials, point and box.
 TEST_F(PlacementTest, IdentityPlacementIsExact) {
-  Scene scene = parseSceneFile(std::string(RAYTEX_SOURCE_DIR) + "/scenes/textures.cfg");
   const int w = 64, h = 48;
   for (const char* material : {"aSolidChecker", "aMarble", "anImage", "aChecker"}) {
     SCOPED_TRACE(material);
-    for (size_t m = 0; m < scene.materials.size(); ++m)
-      if (scene.materials[m].name == material) scene.spheres[0].material = int(m);
+    Scene scene = courseScene(material);
     SceneShape with = sceneShape(scene), without = with;
     ASSERT_EQ(without.placed, 0u);
     with.placed = 1;

@@ -1,7 +1,8 @@
 // Progressive rendering (the viewer): N x N samples added one per dispatch must end
 // bit-identical to the single dispatch that loops over them, for point and box filtering;
 // the means on the way are the means of the samples so far.
-#include "gpu_fixture.h"
+#include "support/course_scene.h"
+#include "support/gpu_fixture.h"
 #include "gpu_scene.h"
 #include "parser.h"
 #include "renderer.h"
@@ -12,20 +13,6 @@
 #include <string>
 
 namespace {
-
-const std::string kSourceDir = RAYTEX_SOURCE_DIR;
-
-// The course's materials on a sphere over a checkered plane, with an image, a noise and a
-// closed-form kind, so every filter path runs.
-Scene sceneWith(const std::string& sphereMaterial) {
-  std::string text = "#include \"texture_include.cfg\"\n"
-                     "camera { eye = (0, 3, 12); lookat = (0, -0.5, 0); up = (0, 1, 0); fov = 35; }\n"
-                     "light { position = (-6, 10, 6); color = (1, 1, 1); }\n"
-                     "ambient_light = (1, 1, 1);\n"
-                     "sphere { center = (0, 0, 0); radius = 2.0; " + sphereMaterial + "; }\n"
-                     "plane { normal = (0, 1, 0); distance = -2.0; tex_scale = 5.0; aChecker; }\n";
-  return parseSceneText(text, kSourceDir + "/scenes/progressive-test.cfg");
-}
 
 class ProgressiveTest : public RenderTest {
  protected:
@@ -64,7 +51,7 @@ class ProgressiveEqualsLoop : public ProgressiveTest, public ::testing::WithPara
 
 TEST_P(ProgressiveEqualsLoop, BitIdentical) {
   const Case c = GetParam();
-  Scene scene = sceneWith(c.material);
+  Scene scene = courseScene(c.material);
   std::vector<float> loop = render(scene, kWidth, kHeight, OUTPUT_SHADED, c.samplesPerSide, c.filter);
   std::vector<float> progressive = renderProgressive(scene, c.samplesPerSide, c.filter);
   ASSERT_EQ(loop.size(), progressive.size());
@@ -79,12 +66,19 @@ INSTANTIATE_TEST_SUITE_P(Kinds, ProgressiveEqualsLoop,
                          ::testing::Values(Case{"aSolidChecker", 1, FILTER_POINT}, Case{"aSolidChecker", 2, FILTER_POINT},
                                            Case{"aSolidChecker", 3, FILTER_POINT}, Case{"aMarble", 4, FILTER_POINT},
                                            Case{"anImage", 3, FILTER_POINT}, Case{"aSolidChecker", 3, FILTER_BOX},
-                                           Case{"aTurbulence", 2, FILTER_BOX}, Case{"anImage", 2, FILTER_BOX}));
+                                           Case{"aTurbulence", 2, FILTER_BOX}, Case{"anImage", 2, FILTER_BOX}),
+                         // Named by the case (aMarble_4x4_point), not by its bytes: the default
+                         // name prints the material pointer, which changes from build to build.
+                         [](const ::testing::TestParamInfo<Case>& info) {
+                           const Case& c = info.param;
+                           return std::string(c.material) + "_" + std::to_string(c.samplesPerSide) + "x" +
+                                  std::to_string(c.samplesPerSide) + (c.filter == FILTER_BOX ? "_box" : "_point");
+                         });
 
 // The mean after k samples is the mean of the first k samples: the first image is the one
 // sample at the centre of the top-left cell, and restarting at sample 0 forgets the old sums.
 TEST_F(ProgressiveTest, MeansOfTheSamplesSoFar) {
-  Scene scene = sceneWith("aMarble");
+  Scene scene = courseScene("aMarble");
   std::vector<std::vector<float>> means;
   renderProgressive(scene, 2, FILTER_POINT, &means);
   ASSERT_EQ(means.size(), 4u);

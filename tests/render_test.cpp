@@ -3,7 +3,10 @@
 // - per-pixel checks of the kernel's texture coordinates and texture colours
 //   against the CPU double-precision reference (host/reference.cpp, mapping.cpp,
 //   texture.cpp), independent of any golden.
-#include "gpu_fixture.h"
+#include "support/course_scene.h"
+#include "support/files.h"
+#include "support/gpu_fixture.h"
+#include "support/reference_pixels.h"
 #include "gpu_scene.h"
 #include "image_io.h"
 #include "output_file.h"
@@ -22,51 +25,12 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 namespace {
 
 const std::string kSourceDir = RAYTEX_SOURCE_DIR;
-const std::string kCourseScene = kSourceDir + "/scenes/textures.cfg";
 const char* const kMaterials[] = {"aSolidChecker", "aChecker", "aNoise",      "aMarble",
                                   "aWood",         "anImage",  "aTurbulence", "aDturbulence"};
-
-std::string readFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
-// The course scene with `material` on the sphere, switched the way the notes say:
-// comment out `aSolidChecker;` and uncomment the chosen line.
-std::string courseSceneText(const std::string& material) {
-  std::string text = readFile(kCourseScene);
-  if (material == "aSolidChecker") return text;
-  auto replaceOnce = [&](const std::string& from, const std::string& to) {
-    size_t at = text.find(from);
-    EXPECT_NE(at, std::string::npos) << "'" << from << "' not in " << kCourseScene;
-    if (at != std::string::npos) text.replace(at, from.size(), to);
-  };
-  replaceOnce("    aSolidChecker;", "    // aSolidChecker;");
-  if (material == "aChecker")  // not among the notes' commented lines: add it
-    replaceOnce("    // aSolidChecker;", "    // aSolidChecker;\n    aChecker;");
-  else
-    replaceOnce("// " + material + ";", material + ";");
-  return text;
-}
-
-Scene courseScene(const std::string& material) {
-  return parseSceneText(courseSceneText(material), kCourseScene);
-}
-
-std::string outputDir() {
-  std::string dir = std::string(RAYTEX_BINARY_DIR) + "/test-output";
-  std::filesystem::create_directories(dir);
-  return dir;
-}
-
 
 // --- goldens ---------------------------------------------------------------
 
@@ -105,12 +69,12 @@ TEST_P(GoldenTest, CourseSceneMatchesGolden) {
       }
   const bool ok = diff.meanError <= 0.5 && bigDifferences <= size_t(w) * h / 400;
   if (!ok) {
-    writePngAtomic(outputDir() + "/" + material + "_actual.png", actual);
-    writePngAtomic(outputDir() + "/" + material + "_diff.png", diffImage(actual, expected));
+    writePngAtomic((testOutputDir() / (material + "_actual.png")).string(), actual);
+    writePngAtomic((testOutputDir() / (material + "_diff.png")).string(), diffImage(actual, expected));
   }
   EXPECT_TRUE(ok) << material << ": mean channel error " << diff.meanError << ", max "
                   << diff.maxError << ", " << bigDifferences << " pixels off by > 16; see "
-                  << outputDir();
+                  << testOutputDir().string();
 }
 
 INSTANTIATE_TEST_SUITE_P(Materials, GoldenTest, ::testing::ValuesIn(kMaterials),
@@ -119,16 +83,6 @@ INSTANTIATE_TEST_SUITE_P(Materials, GoldenTest, ::testing::ValuesIn(kMaterials),
                          });
 
 // --- analytic checks against the CPU double reference ----------------------
-
-// Distance between a kernel coordinate and the reference value in [0, 1]. Only where
-// the reference lies within float rounding of a tile border (0 or 1) may the kernel
-// land on the other side of it, so only there does the distance wrap. (A plain
-// modulo-1 distance would hide u = -0.3 for 0.7: the int-truncation bug.)
-double coordinateDistance(double gpu, double ref) {
-  double d = std::abs(gpu - ref);
-  if (std::min(ref, 1.0 - ref) < 1e-4) d = std::min(d, std::abs(1.0 - d));
-  return d;
-}
 
 struct PixelRef {
   ReferenceHit hit;
@@ -258,7 +212,7 @@ INSTANTIATE_TEST_SUITE_P(Materials, AlbedoTest, ::testing::ValuesIn(kMaterials),
 
 // The shaded image is not black, the sphere shades, the plane shows a shadow.
 TEST_F(RenderTest, DefaultSceneHasShadowOnPlane) {
-  Scene scene = parseSceneFile(kCourseScene);
+  Scene scene = parseSceneFile(courseScenePath());
   ASSERT_FALSE(scene.lights.empty());
   const int w = 160, h = 120;
   std::vector<float> shaded = render(scene, w, h, OUTPUT_SHADED);
@@ -296,7 +250,7 @@ TEST_F(RenderTest, DefaultSceneHasShadowOnPlane) {
 // bands of 7 rows, the last one shorter, give the whole image's floats bit for bit, with 2 x 2
 // samples so that sub-pixel positions cross the band edges too.
 TEST_F(RenderTest, BandsRenderTheWholeImage) {
-  Scene scene = parseSceneFile(kCourseScene);
+  Scene scene = parseSceneFile(courseScenePath());
   const uint32_t w = 64, h = 50, rows = 7;
   std::vector<float> whole = render(scene, w, h, OUTPUT_SHADED, 2);
   ASSERT_EQ(bandCount(*renderer_), 1u);

@@ -2,10 +2,10 @@
 // a point between a light's grid plane and half the light's height, looked up in float as the
 // kernel does, every sphere that blocks its shadow ray in float64 is listed (the device tests
 // in sphere_tree_test.cpp render through them against the tree's shadow walk).
-#include "sphere_field.h"
+#include "support/sphere_field.h"
 #include "gpu_scene.h"
-#include "packed_rays.h"
-#include "long_shadow_lists.h"
+#include "support/packed_rays.h"
+#include "support/long_shadow_lists.h"
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>

@@ -1,9 +1,9 @@
 // The shadow lists (host/shadow_lists.cpp) are conservative: every sphere that blocks a
 // pixel's shadow ray in float64 is listed for its cell and light (the device tests in
 // sphere_tree_test.cpp render them against the tree's shadow walk).
-#include "sphere_field.h"
+#include "support/sphere_field.h"
 #include "gpu_scene.h"
-#include "packed_rays.h"
+#include "support/packed_rays.h"
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>

@@ -3,7 +3,8 @@
 // loops bounded by Frame's counts. Scenes at and over MAX_SPECIALISED_COUNT cover both the
 // unrolled and the run-time loops. Kernels built around a scene's values (bakeScene, what
 // raytex render uses) must render exactly what the kernel reading them from buffers renders.
-#include "gpu_fixture.h"
+#include "support/course_scene.h"
+#include "support/gpu_fixture.h"
 #include "gpu_scene.h"
 #include "parser.h"
 
@@ -24,13 +25,6 @@ std::string header() {
 }
 
 Scene parse(const std::string& text) { return parseSceneText(text, kSourceDir + "/scenes/specialisation-test.cfg"); }
-
-// A course material on the sphere, another on the plane, one light.
-Scene courseScene(const std::string& sphereMaterial, const std::string& planeMaterial) {
-  return parse(header() + "light { position = (-6, 10, 6); color = (1, 1, 1); }\n" +
-               "sphere { center = (0, 0, 0); radius = 2.0; " + sphereMaterial + "; }\n" +
-               "plane { normal = (0, 1, 0); distance = -2.0; tex_scale = 5.0; " + planeMaterial + "; }\n");
-}
 
 // `spheres` small spheres in a row casting shadows from two lights, over two planes.
 Scene rowScene(int spheres) {

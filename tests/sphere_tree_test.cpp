@@ -2,10 +2,10 @@
 // uniform blocks' sizes it renders exactly what the loop over every sphere renders, from any
 // camera; over them (spheres and nodes in storage buffers) it hits what the float64
 // reference hits.
-#include "gpu_fixture.h"
-#include "sphere_field.h"
+#include "support/gpu_fixture.h"
+#include "support/sphere_field.h"
 #include "gpu_scene.h"
-#include "long_shadow_lists.h"
+#include "support/long_shadow_lists.h"
 #include "parser.h"
 #include "reference.h"
 #include "texture_kinds.h"

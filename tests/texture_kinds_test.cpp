@@ -2,6 +2,8 @@
 // generated from it, and the GPU packing each row describes.
 #include "texture_kinds.h"
 
+#include "support/files.h"
+
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -10,12 +12,6 @@
 
 namespace {
 
-std::string readFile(const std::string& path) {
-  std::ifstream in(path);
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
 
 }  // namespace
 

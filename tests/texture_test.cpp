@@ -223,14 +223,21 @@ TEST(TextureProcedural, NoReferenceForImageOrNone) {
   EXPECT_THROW(textureColorReference(defaultTexture(TextureKind::None), tc), std::invalid_argument);
 }
 
+// Every default a kind's number keys start from lies in the range the parser accepts for that
+// key (the key rows' ranges, not the defaults): a scene may write any default out and parse.
 TEST(TextureProcedural, DefaultsAreSane) {
   for (TextureKind kind : kProcedural) {
     const TextureDesc t = defaultTexture(kind);
     EXPECT_EQ(t.kind, kind);
-    EXPECT_GT(t.scale, 0.0f);
-    EXPECT_GE(t.strength, 0.0f);
-    EXPECT_GE(t.squares, 1.0f);
-    EXPECT_GE(t.octaves, 1);
-    EXPECT_LE(t.octaves, 16);
+    const TextureKindInfo& info = textureKindInfo(kind);
+    int numbers = 0;
+    for (const TextureKey& key : info.keys) {
+      if (!key.number && !key.whole) continue;
+      const double value = key.number ? double(t.*key.number) : double(t.*key.whole);
+      ++numbers;
+      EXPECT_TRUE(inRange(key.range, value))
+          << info.name << "." << key.name << " defaults to " << value << ", outside " << describeRange(key.range);
+    }
+    EXPECT_GT(numbers, 0) << info.name;
   }
 }

@@ -1,9 +1,9 @@
 // Tile kernels (host/tile_kernels.h) on the device: a frame split among kernels specialised to
 // the kinds of their tiles renders, bit for bit, what the one kernel of the scene renders.
-#include "gpu_fixture.h"
+#include "support/gpu_fixture.h"
 #include "gpu_scene.h"
 #include "parser.h"
-#include "sphere_field.h"
+#include "support/sphere_field.h"
 #include "tile_kernels.h"
 
 #include <gtest/gtest.h>

@@ -2,7 +2,7 @@
 // kernels chosen, and the order that gives every tile to exactly one kernel able to render it.
 #include "gpu_scene.h"
 #include "reference.h"
-#include "sphere_field.h"
+#include "support/sphere_field.h"
 #include "texture_kinds.h"
 #include "tile_kernels.h"
 

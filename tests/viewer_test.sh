@@ -96,11 +96,14 @@ viewer=""
 check clean-exit test "$rc" -eq 0
 check no-validation-errors test "$(grep -c 'validation error' "$tmp/view.log")" -eq 0
 
-# The same view headless: the sphere and plane materials switched in the scene file.
+# The same view headless: the sphere and plane materials switched in a copy of the scene file
+# (beside its include and the textures, as in scenes/, under the temporary directory).
+mkdir -p "$tmp/headless/scenes"
+cp "$src/scenes/texture_include.cfg" "$tmp/headless/scenes/"
+ln -s "$src/textures" "$tmp/headless/textures"
 sed -e 's|^    aSolidChecker;|    // aSolidChecker;|' -e 's|^    // anImage;|    anImage;|' \
-  -e 's|^    aChecker;|    aNoise;|' "$src/scenes/textures.cfg" >"$src/scenes/.viewer-test.cfg"
-"$raytex" render "$src/scenes/.viewer-test.cfg" -o "$tmp/render.png" --width 320 --height 240 --spp 64
-rm -f "$src/scenes/.viewer-test.cfg"
+  -e 's|^    aChecker;|    aNoise;|' "$src/scenes/textures.cfg" >"$tmp/headless/scenes/viewer-test.cfg"
+"$raytex" render "$tmp/headless/scenes/viewer-test.cfg" -o "$tmp/render.png" --width 320 --height 240 --spp 64
 check screenshot-equals-render cmp -s "$tmp/shot.png" "$tmp/render.png"
 check window-shows-render "$xwdDiff" "$tmp/window.xwd" "$tmp/render.png" 1
 
