@@ -55,7 +55,8 @@ struct PackOptions {
   uint32_t maxImageMiB = kDefaultMaxImageMiB;
 };
 
-// Throws SceneError (with the texture's file location) if an image cannot be loaded, or if the
+// Throws ImageInputError (at the texture's file location) if an image cannot be loaded, and
+// SceneError if the
 // images' headers show that they are more than MAX_IMAGES or would upload more than
 // options.maxImageMiB: checked before any image is decoded, each then decoded straight into its
 // chain. width, height: output size in pixels.

@@ -317,35 +317,32 @@ FILE* openAndProbe(const std::string& path, ImageHeader* header, std::string* er
 
 }  // namespace
 
-bool probeImage(const std::string& path, ImageHeader* header, std::string* error) {
-  FILE* file = openAndProbe(path, header, error);
-  if (file) fclose(file);
-  return file != nullptr;
+ImageHeader probeImage(const std::string& path) {
+  ImageHeader header;
+  std::string error;
+  FILE* file = openAndProbe(path, &header, &error);
+  if (!file) throw ImageInputError(error);
+  fclose(file);
+  return header;
 }
 
-bool decodeImage(const std::string& path, const ImageHeader& header, uint8_t* rgba, std::string* error) {
+void decodeImage(const std::string& path, const ImageHeader& header, uint8_t* rgba) {
   ImageHeader now;
-  FileCloser file{openAndProbe(path, &now, error)};
-  if (!file.file) return false;
-  if (now.width != header.width || now.height != header.height || now.format != header.format) {
-    *error = "cannot decode image '" + path + "': the file changed while it was read";
-    return false;
-  }
+  std::string error;
+  FileCloser file{openAndProbe(path, &now, &error)};
+  if (!file.file) throw ImageInputError(error);
+  if (now.width != header.width || now.height != header.height || now.format != header.format)
+    throw ImageInputError("cannot decode image '" + path + "': the file changed while it was read");
   std::string message;
   bool ok = fseek(file.file, 0, SEEK_SET) == 0 &&
             (header.format == ImageFormat::Png ? runPng(file.file, header, rgba, &message)
                                                : runJpeg(file.file, &now, rgba, &message));
-  if (!ok) *error = "cannot decode image '" + path + "': " + message;
-  return ok;
+  if (!ok) throw ImageInputError("cannot decode image '" + path + "': " + message);
 }
 
-bool loadImage(const std::string& path, ImageRGBA8* image, std::string* error) {
-  ImageHeader header;
-  if (!probeImage(path, &header, error)) return false;
-  std::vector<uint8_t> pixels(size_t(header.width) * header.height * 4);
-  if (!decodeImage(path, header, pixels.data(), error)) return false;
-  image->width = header.width;
-  image->height = header.height;
-  image->pixels = std::move(pixels);
-  return true;
+ImageRGBA8 loadImage(const std::string& path) {
+  const ImageHeader header = probeImage(path);
+  ImageRGBA8 image{header.width, header.height, std::vector<uint8_t>(size_t(header.width) * header.height * 4)};
+  decodeImage(path, header, image.pixels.data());
+  return image;
 }

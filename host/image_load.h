@@ -4,6 +4,7 @@
 // it. Corrupt or truncated files are refused, never decoded in part. No Vulkan.
 #pragma once
 
+#include "error.h"
 #include "image_io.h"
 
 #include <cstdint>
@@ -21,15 +22,15 @@ struct ImageHeader {
 };
 
 // Reads the file's signature and header only: its format (which must match its extension),
-// width and height. False with *error set (naming the path) for a file that is missing, not a
+// width and height. Throws ImageInputError (naming the path) for a file that is missing, not a
 // regular file, of another format, or whose header is malformed or over kMaxImageFileSide.
-bool probeImage(const std::string& path, ImageHeader* header, std::string* error);
+ImageHeader probeImage(const std::string& path);
 
 // Decodes the whole file into `rgba` (width x height x 4 bytes, row 0 at the top, sRGB as
 // stored), which must hold exactly header.width x header.height texels: the pixels go
 // straight into the caller's buffer. Probes the file again and refuses it if its header no
-// longer matches. False with *error set on any error or warning of the decoder.
-bool decodeImage(const std::string& path, const ImageHeader& header, uint8_t* rgba, std::string* error);
+// longer matches. Throws ImageInputError on any error or warning of the decoder.
+void decodeImage(const std::string& path, const ImageHeader& header, uint8_t* rgba);
 
-// probeImage, then decodeImage into image->pixels.
-bool loadImage(const std::string& path, ImageRGBA8* image, std::string* error);
+// probeImage, then decodeImage into the image's pixels. Throws ImageInputError.
+ImageRGBA8 loadImage(const std::string& path);

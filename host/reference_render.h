@@ -23,8 +23,8 @@ struct ReferenceImage {
   size_t nonFinite = 0;     // non-finite channel values (written as they are)
 };
 
-// Decoded image textures of the materials objects use, by resolved path. Throws SceneError
-// at the texture's `file` location when one cannot be loaded, or, before decoding any, when
+// Decoded image textures of the materials objects use, by resolved path. Throws ImageInputError
+// at the texture's `file` location when one cannot be loaded, or SceneError, before decoding any, when
 // they are more than MAX_IMAGES files or their headers show more than maxImageMiB for the
 // GPU's textures (as a point-filtered GPU render counts it: probeSceneImages), so that both
 // renderers accept the same scenes.

@@ -57,8 +57,11 @@ std::vector<SceneImage> probeSceneImages(const Scene& scene, const std::vector<i
       throw SceneError(t.loc, "image '" + t.imagePath + "' is the scene's " + std::to_string(MAX_IMAGES + 1) +
                                   "th image file; raytex renders at most " + std::to_string(MAX_IMAGES));
     SceneImage image{t.imagePath, t.loc, {}};
-    std::string error;
-    if (!probeImage(image.path, &image.header, &error)) throw SceneError(t.loc, error);
+    try {
+      image.header = probeImage(image.path);
+    } catch (const ImageInputError& e) {
+      throw ImageInputError(t.loc, e.what());
+    }
     images.push_back(std::move(image));
     checkBudget(images, mipmaps, maxImageMiB);
   }
@@ -66,8 +69,11 @@ std::vector<SceneImage> probeSceneImages(const Scene& scene, const std::vector<i
 }
 
 void decodeSceneImage(const SceneImage& image, uint8_t* rgba) {
-  std::string error;
-  if (!decodeImage(image.path, image.header, rgba, &error)) throw SceneError(image.loc, error);
+  try {
+    decodeImage(image.path, image.header, rgba);
+  } catch (const ImageInputError& e) {
+    throw ImageInputError(image.loc, e.what());
+  }
 }
 
 std::string imagesOverDeviceLimits(const std::vector<SceneImage>& images, uint32_t maxImageDimension2D) {

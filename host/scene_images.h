@@ -27,13 +27,13 @@ uint64_t imageUploadBytes(const std::vector<SceneImage>& images, bool mipmaps);
 
 // The image files of `materials` (indices into scene.materials; -1, the default material, and
 // non-image textures skipped; each file once), in order of first use, with their headers.
-// Throws SceneError at the texture's location for a file that cannot be probed, for the image
-// after the first MAX_IMAGES (before its header is read), and at the first image that brings
+// Throws ImageInputError at the texture's location for a file that cannot be probed, and
+// SceneError for the image after the first MAX_IMAGES (before its header is read), and at the first image that brings
 // imageUploadBytes over maxImageMiB.
 std::vector<SceneImage> probeSceneImages(const Scene& scene, const std::vector<int>& materials, bool mipmaps,
                                          uint32_t maxImageMiB);
 
-// Decodes the image into rgba (its header's size, 4 bytes a texel). Throws SceneError at its
+// Decodes the image into rgba (its header's size, 4 bytes a texel). Throws ImageInputError at its
 // location when the file is corrupt, truncated or changed since it was probed.
 void decodeSceneImage(const SceneImage& image, uint8_t* rgba);
 

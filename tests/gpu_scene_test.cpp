@@ -177,7 +177,7 @@ TEST(GpuScene, CameraFrameFollowsFovAndAspect) {
   EXPECT_EQ(f.height, 100u);
 }
 
-TEST(GpuScene, MissingOrBrokenImageIsASceneErrorAtTheFileKey) {
+TEST(GpuScene, MissingOrBrokenImageIsAnImageInputErrorAtTheFileKey) {
   namespace fs = std::filesystem;
   fs::path dir = freshTempDir("gpu_scene_images");
   writeFile(dir / "broken.png", "PNG? no");
@@ -187,8 +187,9 @@ TEST(GpuScene, MissingOrBrokenImageIsASceneErrorAtTheFileKey) {
     Scene scene = parseSceneText(text, (dir / "s.cfg").string());
     try {
       buildGpuScene(scene, 8, 8);
-      FAIL() << "expected SceneError for " << file;
-    } catch (const SceneError& e) {
+      FAIL() << "expected ImageInputError for " << file;
+    } catch (const ImageInputError& e) {
+      EXPECT_TRUE(e.located);
       std::string msg = e.what();
       EXPECT_EQ(msg.rfind((dir / "s.cfg").string() + ":3:12: ", 0), 0u) << msg;
       EXPECT_NE(msg.find(file), std::string::npos) << msg;

@@ -192,8 +192,7 @@ TEST_F(ImageFilterTest, SphereSeamHasNoLine) {
     // seam 0.073, local 0.039).
     if (std::string(image) != "earth.jpg") continue;
     ImageRGBA8 decoded;
-    std::string error;
-    ASSERT_TRUE(loadImage(kSourceDir + "/textures/" + image, &decoded, &error)) << error;
+    ASSERT_NO_THROW(decoded = loadImage(kSourceDir + "/textures/" + image));
     const ImageRGBA8 mean = mipChain(decoded).back();
     std::vector<float> line = box1;
     for (int y = 0; y < h; ++y)

@@ -51,7 +51,7 @@ TEST(ImageIo, WritesPngThatDecodesToTheSamePixels) {
   writePngAtomic(path, img);
   ImageRGBA8 back;
   std::string error;
-  ASSERT_TRUE(loadImage(path, &back, &error)) << error;
+  ASSERT_NO_THROW(back = loadImage(path));
   EXPECT_EQ(back.width, 7);
   EXPECT_EQ(back.height, 5);
   EXPECT_EQ(back.pixels, img.pixels);
@@ -70,7 +70,7 @@ TEST(ImageIo, FailedWriteLeavesNoFileAndNamesThePath) {
   try {
     writePngAtomic("/nonexistent-dir/x.png", img);
     FAIL() << "expected an exception";
-  } catch (const std::runtime_error& e) {
+  } catch (const IoError& e) {
     EXPECT_NE(std::string(e.what()).find("/nonexistent-dir/x.png"), std::string::npos) << e.what();
   }
   EXPECT_FALSE(fs::exists("/nonexistent-dir/x.png"));
@@ -78,13 +78,17 @@ TEST(ImageIo, FailedWriteLeavesNoFileAndNamesThePath) {
 
 TEST(ImageIo, LoadReportsMissingAndUndecodableFiles) {
   fs::path dir = freshTempDir("image_io_load");
-  ImageRGBA8 img;
-  std::string error;
-  EXPECT_FALSE(loadImage((dir / "missing.png").string(), &img, &error));
-  EXPECT_NE(error.find("cannot open"), std::string::npos) << error;
+  auto loadError = [](const fs::path& path) {
+    try {
+      loadImage(path.string());
+    } catch (const ImageInputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("loaded");
+  };
+  EXPECT_NE(loadError(dir / "missing.png").find("cannot open"), std::string::npos);
   std::ofstream((dir / "bad.png").string()) << "not an image";
-  EXPECT_FALSE(loadImage((dir / "bad.png").string(), &img, &error));
-  EXPECT_NE(error.find("cannot decode"), std::string::npos) << error;
+  EXPECT_NE(loadError(dir / "bad.png").find("cannot decode"), std::string::npos);
 }
 
 TEST(ImageIo, CompareAndDiffImages) {

@@ -28,12 +28,15 @@ namespace {
 const std::string kSourceDir = RAYTEX_SOURCE_DIR;
 const std::string kHostile = kSourceDir + "/tests/malformed/images/";
 
+// The message of the ImageInputError that loading `path` throws.
 std::string loadError(const std::string& path) {
-  ImageRGBA8 image;
-  std::string error;
-  EXPECT_FALSE(loadImage(path, &image, &error)) << path << " was decoded as " << image.width << "x" << image.height;
-  EXPECT_TRUE(image.pixels.empty()) << path;
-  return error;
+  try {
+    ImageRGBA8 image = loadImage(path);
+    ADD_FAILURE() << path << " was decoded as " << image.width << "x" << image.height;
+  } catch (const ImageInputError& e) {
+    return e.what();
+  }
+  return "";
 }
 
 
@@ -89,20 +92,18 @@ TEST(ImageLoad, ExtensionsInAnyCase) {
   fs::copy_file(kSourceDir + "/textures/earth.jpg", dir / "earth.Jpg");
   for (const char* name : {"GRID.PNG", "earth.JPEG", "earth.Jpg"}) {
     ImageRGBA8 image;
-    std::string error;
-    EXPECT_TRUE(loadImage((dir / name).string(), &image, &error)) << error;
+    EXPECT_NO_THROW(image = loadImage((dir / name).string()));
     EXPECT_EQ(image.pixels.size(), size_t(image.width) * image.height * 4) << name;
   }
 }
 
 TEST(ImageLoad, ProbeReadsTheHeader) {
   ImageHeader h;
-  std::string error;
-  ASSERT_TRUE(probeImage(kSourceDir + "/textures/earth.jpg", &h, &error)) << error;
+  ASSERT_NO_THROW(h = probeImage(kSourceDir + "/textures/earth.jpg"));
   EXPECT_EQ(h.width, 2048);
   EXPECT_EQ(h.height, 1024);
   EXPECT_EQ(h.format, ImageFormat::Jpeg);
-  ASSERT_TRUE(probeImage(kSourceDir + "/textures/uv_grid.png", &h, &error)) << error;
+  ASSERT_NO_THROW(h = probeImage(kSourceDir + "/textures/uv_grid.png"));
   EXPECT_EQ(h.width, 512);
   EXPECT_EQ(h.height, 256);
   EXPECT_EQ(h.format, ImageFormat::Png);
@@ -111,10 +112,14 @@ TEST(ImageLoad, ProbeReadsTheHeader) {
 // A side over 16384 is refused from the header (the file is 96 bytes); 16384 is accepted.
 TEST(ImageLoad, SideOver16384IsRefusedFromTheHeader) {
   ImageHeader h;
-  std::string error;
-  EXPECT_FALSE(probeImage(kHostile + "wide-16385.png", &h, &error));
-  EXPECT_NE(error.find("is 16385x1: raytex reads images of at most 16384 a side"), std::string::npos) << error;
-  EXPECT_TRUE(probeImage(kHostile + "wide-16384.png", &h, &error)) << error;
+  try {
+    probeImage(kHostile + "wide-16385.png");
+    ADD_FAILURE() << "wide-16385.png was probed";
+  } catch (const ImageInputError& e) {
+    EXPECT_NE(std::string(e.what()).find("is 16385x1: raytex reads images of at most 16384 a side"), std::string::npos)
+        << e.what();
+  }
+  EXPECT_NO_THROW(h = probeImage(kHostile + "wide-16384.png"));
   EXPECT_EQ(h.width, 16384);
 }
 
@@ -133,8 +138,7 @@ TEST(ImageLoad, PaletteExpandsWithTransparency) {
                                     std::string("\xff\x00\x00\x00\xff\x00\x00\x00\xff", 9),
                                     std::string("\x80", 1)));
   ImageRGBA8 image;
-  std::string error;
-  ASSERT_TRUE(loadImage((dir / "p.png").string(), &image, &error)) << error;
+  ASSERT_NO_THROW(image = loadImage((dir / "p.png").string()));
   std::vector<uint8_t> want = {255, 0, 0, 128, 0, 255, 0, 255, 0, 0, 255, 255,
                                0,   0, 255, 255, 0, 255, 0, 255, 255, 0, 0, 128};
   EXPECT_EQ(image.pixels, want);
@@ -145,10 +149,9 @@ TEST(ImageLoad, GrayAndRgbBecomeOpaqueRgba) {
   writeFile(dir / "g.png", pngFile(2, 1, 0, std::string{10, char(200)}));
   writeFile(dir / "c.png", pngFile(1, 1, 2, std::string{1, 2, 3}));
   ImageRGBA8 image;
-  std::string error;
-  ASSERT_TRUE(loadImage((dir / "g.png").string(), &image, &error)) << error;
+  ASSERT_NO_THROW(image = loadImage((dir / "g.png").string()));
   EXPECT_EQ(image.pixels, (std::vector<uint8_t>{10, 10, 10, 255, 200, 200, 200, 255}));
-  ASSERT_TRUE(loadImage((dir / "c.png").string(), &image, &error)) << error;
+  ASSERT_NO_THROW(image = loadImage((dir / "c.png").string()));
   EXPECT_EQ(image.pixels, (std::vector<uint8_t>{1, 2, 3, 255}));
 }
 
@@ -166,13 +169,10 @@ TEST(ImageLoad, TruncatedPngIsRefusedAtEveryLength) {
   // missing file would be refused at every length too).
   writeFile(dir / "whole.png", png);
   ImageRGBA8 whole;
-  std::string wholeError;
-  ASSERT_TRUE(loadImage((dir / "whole.png").string(), &whole, &wholeError)) << wholeError;
+  ASSERT_NO_THROW(whole = loadImage((dir / "whole.png").string()));
   for (size_t length : {size_t(0), size_t(8), size_t(30), size_t(100), png.size() / 2, png.size() - 13, png.size() - 1}) {
     writeFile(dir / "cut.png", png.substr(0, length));
-    ImageRGBA8 image;
-    std::string error;
-    EXPECT_FALSE(loadImage((dir / "cut.png").string(), &image, &error)) << length << " bytes";
+    EXPECT_THROW(loadImage((dir / "cut.png").string()), ImageInputError) << length << " bytes";
   }
 }
 
@@ -185,10 +185,12 @@ TEST(ImageLoad, FifoIsRefusedWithoutBlocking) {
   auto result = std::make_shared<std::promise<std::string>>();
   std::future<std::string> error = result->get_future();
   std::thread([fifo, result] {
-    ImageRGBA8 image;
-    std::string message;
-    loadImage(fifo, &image, &message);
-    result->set_value(message);
+    try {
+      loadImage(fifo);
+      result->set_value("loaded");
+    } catch (const ImageInputError& e) {
+      result->set_value(e.what());
+    }
   }).detach();
   ASSERT_EQ(error.wait_for(std::chrono::seconds(5)), std::future_status::ready) << "loadImage blocked on a FIFO";
   EXPECT_NE(error.get().find("not a regular file"), std::string::npos);

@@ -165,8 +165,7 @@ TEST(MipChain, GpuScenePacksEachImagesOwnChain) {
     EXPECT_EQ(chain.height, sizes[i][1]);
     ASSERT_EQ(chain.levels, sizes[i][2]);
     ImageRGBA8 image;
-    std::string error;
-    ASSERT_TRUE(loadImage(kSourceDir + "/textures/" + files[i], &image, &error)) << error;
+    ASSERT_NO_THROW(image = loadImage(kSourceDir + "/textures/" + files[i]));
     std::vector<uint8_t> expected;
     for (const ImageRGBA8& level : mipChain(image)) expected.insert(expected.end(), level.pixels.begin(), level.pixels.end());
     EXPECT_TRUE(expected == chain.pixels) << files[i];

@@ -53,8 +53,7 @@ TEST_P(GoldenTest, CourseSceneMatchesGolden) {
     GTEST_SKIP() << "wrote " << golden << ": look at it before committing";
   }
   ImageRGBA8 expected;
-  std::string error;
-  ASSERT_TRUE(loadImage(golden, &expected, &error)) << error;
+  ASSERT_NO_THROW(expected = loadImage(golden));
   ImageDiff diff = compareImages(actual, expected);
   ASSERT_FALSE(diff.sizeMismatch);
 
@@ -159,9 +158,8 @@ TEST_P(AlbedoTest, TextureColourMatchesDoubleReference) {
   std::vector<PixelRef> ref = referenceImage(scene, w, h);
   ImageRGBA8 image;
   if (material == "anImage") {
-    std::string error;
     const Material& m = scene.materials[size_t(scene.spheres[0].material)];
-    ASSERT_TRUE(loadImage(m.texture.imagePath, &image, &error)) << error;
+    ASSERT_NO_THROW(image = loadImage(m.texture.imagePath));
   }
 
   int checked = 0, mismatches = 0;

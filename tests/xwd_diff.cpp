@@ -56,8 +56,14 @@ int main(int argc, char** argv) {
   }
   ImageRGBA8 window, image;
   std::string error;
-  if (!loadXwd(argv[1], &window, &error) || !loadImage(argv[2], &image, &error)) {
+  if (!loadXwd(argv[1], &window, &error)) {
     fprintf(stderr, "%s\n", error.c_str());
+    return 2;
+  }
+  try {
+    image = loadImage(argv[2]);
+  } catch (const ImageInputError& e) {
+    fprintf(stderr, "%s\n", e.what());
     return 2;
   }
   if (window.width != image.width || window.height != image.height) {
