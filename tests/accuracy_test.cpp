@@ -13,7 +13,7 @@
 
 namespace {
 
-// The checker floor toward the horizon (accuracy notes F4: camera 1 above the floor, 8 degrees
+// The checker floor toward the horizon (camera 1 above the floor, 8 degrees
 // down, 60 degree fov, unit checks), lit by the ambient term alone so pixels are texture.
 Scene horizonScene() {
   return parseSceneText(

@@ -1,6 +1,6 @@
-// FILTER_BOX for the noise kinds (issue 3, accuracy ladder L5 and L6): frequency-clamped noise,
-// turbulence and derivative turbulence, band-limited marble and wood (shaders/noise.glsl,
-// shaders/textures.glsl; docs/textures.md, "Filtering the noise kinds").
+// FILTER_BOX for the noise kinds: frequency-clamped noise, turbulence and derivative
+// turbulence, band-limited marble and wood (shaders/noise.glsl, shaders/textures.glsl;
+// docs/textures.md, "Filtering the noise kinds").
 //
 // The scene is the horizon plane of accuracy_test.cpp (camera 1 above the plane, 8 degrees down,
 // 60 degree fov, tex_scale 1) lit by the ambient term alone with color1 black and color2 white,
@@ -174,7 +174,7 @@ TEST(FilterConstants, NoiseMomentsMatchTheShaderConstants) {
   EXPECT_NEAR(shaderVariance, variance, 2e-4);
 }
 
-// --- octave clamping toward the horizon (accuracy.md §7 case 12) ------------------------------
+// --- octave clamping toward the horizon ------------------------------
 
 class OctaveClampingTest : public RenderTest, public ::testing::WithParamInterface<const char*> {};
 

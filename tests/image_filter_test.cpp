@@ -1,7 +1,7 @@
-// Mipmapped image textures in the FILTER_BOX kernel (issue 3, ladder L4; accuracy notes §7
-// cases 2-3): trilinear lookups over host-built mip chains at the footprint's level, against
-// the float64 reference (bilinear level 0, supersampled: the box-filtered truth). Rendered on
-// a Vulkan device (lavapipe in CI) with validation on; every image is checked for NaN/inf.
+// Mipmapped image textures in the FILTER_BOX kernel: trilinear lookups over host-built mip
+// chains at the footprint's level, against the float64 reference (bilinear level 0,
+// supersampled: the box-filtered truth). Rendered on a Vulkan device (lavapipe in CI) with
+// validation on; every image is checked for NaN/inf.
 #include "image_load.h"
 #include "output_file.h"
 #include "parser.h"
@@ -37,7 +37,7 @@ Scene sceneFromText(const std::string& text) {
   return parseSceneText(text, kSourceDir + "/scenes/image_filter_test.cfg");
 }
 
-// The floor toward the horizon (the accuracy notes' F4 view: camera 1 above the floor, 8
+// The floor toward the horizon (camera 1 above the floor, 8
 // degrees down, 60 degree fov), one image per `texScale` units.
 Scene horizonScene(const std::string& image, double texScale) {
   return sceneFromText(flatMaterial(image) +
@@ -143,7 +143,7 @@ SeamStats seamStats(const Image& img, const std::vector<bool>& mask, int w, int 
   return s;
 }
 
-// 2. The sphere's u seam (accuracy notes §7 case 2, F2) facing the camera, minified (the
+// 2. The sphere's u seam facing the camera, minified (the
 // sphere 40 px across, ~16 texels per pixel): with analytic derivatives the seam column gets
 // the same level as its neighbours, so no line of average colour. The camera looks along +x at
 // the -x meridian (u = 0/1); the width is odd so the centre column's samples lie exactly on the
@@ -224,7 +224,7 @@ double poleSlack(Pixel pixel, int w, size_t pole) {
   return slack;
 }
 
-// 3. Looking straight down the sphere's axis at the pole (accuracy notes §7 case 3, F3) with
+// 3. Looking straight down the sphere's axis at the pole with
 // FILTER_BOX: u and its derivatives are undefined there, and near it the footprint covers
 // every u. Odd sizes put the centre pixel's ray (1 spp) exactly on the pole; 2x2 samples
 // land beside it. No NaN/inf; the pole pixel lies within the range of its 8 neighbours, and

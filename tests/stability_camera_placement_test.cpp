@@ -1,4 +1,4 @@
-// Stability (accuracy notes F8, F9): the eye where intersection formulas turn singular. Inside
+// Stability: the eye where intersection formulas turn singular. Inside
 // a sphere (only the far root is in front), and on a plane or just above it looking parallel
 // to it (t = 0/0 or -inf): hit/miss and coordinates equal the reference's.
 #include "reference.h"
@@ -19,7 +19,7 @@
 
 namespace {
 
-// --- 3. camera inside the sphere (F8) ---------------------------------------------
+// --- 3. camera inside the sphere ---------------------------------------------
 
 // Camera at the centre of a textured sphere of radius 5 (and off-centre, still inside),
 // looking towards the u seam, a light inside: every pixel hits the sphere (its far root),
@@ -66,7 +66,7 @@ TEST_F(StabilityTest, CameraInsideSphereSeesItEverywhere) {
   }
 }
 
-// --- 4. camera on the plane, parallel rays (F9) -----------------------------------
+// --- 4. camera on the plane, parallel rays -----------------------------------
 
 // The eye on the plane y = 0 (and 1e-3 above it) looking horizontally; the image height is
 // odd so the middle row's rays have d_y = 0 exactly: t = 0/0 (NaN) on the plane, -inf just

@@ -1,4 +1,4 @@
-// Stability (accuracy notes F7): cancellation in the ray-sphere discriminant. A small sphere
+// Stability: cancellation in the ray-sphere discriminant. A small sphere
 // far away (r/D down to 1e-4), where the naive b^2 - 4ac test gets many rays wrong.
 #include "reference.h"
 #include "reference_render.h"
@@ -18,13 +18,12 @@
 
 namespace {
 
-// --- 5. small far sphere (F7) -----------------------------------------------------
+// --- 5. small far sphere -----------------------------------------------------
 
 // r = 0.1 at D = 1, 10, 100, 1000 (r/D = 1e-1 .. 1e-4), the field of view scaled so the
 // disc is ~24 px wide (443 pixels, 86 of them within 5 % of r of the silhouette). The
-// naive b^2 - 4ac test gets up to 47 % of such rays wrong at 1e-4 (accuracy notes §2;
-// swapped into the kernel it got 50 pixels wrong here at 1e-3 and 6069 of 6912 at 1e-4);
-// the kernel's form must get none wrong. Pixels whose ray passes within kMargin = 1e-5 r
+// naive b^2 - 4ac test gets many such rays wrong at a relative error of 1e-4; the kernel's
+// form must get none wrong. Pixels whose ray passes within kMargin = 1e-5 r
 // of the silhouette are skipped: the kernel's float error in the ray's distance from the
 // centre is ~2e-7 r at D = 1000 (direction error ~6e-8 of its 1e-4 lateral part times D,
 // and ulp(D)^2 / r^2 from the cancellation along the ray). Measured: none skipped, none

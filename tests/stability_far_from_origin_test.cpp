@@ -1,4 +1,4 @@
-// Stability (accuracy notes F6): float precision far from the origin. Scenes translated by up
+// Stability: float precision far from the origin. Scenes translated by up
 // to 2^20 and 1e6: hit/miss, texture coordinates and shadows as at the origin.
 #include "reference.h"
 #include "reference_render.h"
@@ -18,7 +18,7 @@
 
 namespace {
 
-// --- 8. far from the origin (F6) --------------------------------------------------------
+// --- 8. far from the origin --------------------------------------------------------
 
 // The checker plane and a sphere translated to x = X (camera and light too). Hit/miss per
 // pixel must equal the double reference at every X: the kernel subtracts positions of

@@ -1,4 +1,4 @@
-// Stability (issue 17, finding 14): values at the ends of the float range. Texture scales,
+// Stability: values at the ends of the float range. Texture scales,
 // check counts, sphere sizes and positions and colours near 3e38 or 1e-38: coordinates,
 // phases and shading clamp instead of overflowing, and the double reference agrees.
 #include "reference.h"
@@ -19,7 +19,7 @@
 
 namespace {
 
-// --- 10. extreme accepted values (issue 17, finding 14) ----------------------------------
+// --- 10. extreme accepted values ----------------------------------
 
 // A textured plane y = -2 and a sphere of radius 2 at the origin, both with `kind`'s defaults
 // changed by `edit`, seen from (0, 3, 12) as in the course scene.

@@ -1,4 +1,4 @@
-// Stability (accuracy notes F1): texture cells across the axes. A checker computed with int()
+// Stability: texture cells across the axes. A checker computed with int()
 // truncation merges the cells [-1, 0) and [0, 1) into one twice as wide; every cell must be
 // one unit wide on both sides of x = 0 and z = 0, and match the double reference.
 #include "reference.h"
@@ -19,7 +19,7 @@
 
 namespace {
 
-// --- 1. negative-quadrant checker (F1) ----------------------------------------
+// --- 1. negative-quadrant checker ----------------------------------------
 
 // Unit checks on y = 0 seen straight from above (checkerFloorScene), the view centred
 // near the origin so that x = 0 and z = 0 cross the image. Check edges fall exactly on

@@ -1,4 +1,4 @@
-// Stability (accuracy notes F5): self-shadowing. A light at a grazing angle over a sphere on a
+// Stability: self-shadowing. A light at a grazing angle over a sphere on a
 // plane, at scale 1 and 1e4: no acne on the lit side, no light leaking into the shadow.
 #include "reference.h"
 #include "reference_render.h"
@@ -18,7 +18,7 @@
 
 namespace {
 
-// --- 6. self-shadowing and acne (F5) -------------------------------------------------
+// --- 6. self-shadowing and acne -------------------------------------------------
 
 // A point light at a grazing angle (1.2 units up, ~9 away) over a sphere resting on a
 // plane, at scale 1 and with everything (camera, light, sizes, tex_scale) times 1e4. No

@@ -1,4 +1,4 @@
-// Stability (accuracy notes F3, F9, F10): rays and lights on singular points. The pole of a
+// Stability: rays and lights on singular points. The pole of a
 // sphere (atan(0, 0)), zero and underflowing radii hit dead centre (normalize(0)), lights on
 // surfaces, axis and near-parallel plane normals: finite images that match the reference.
 #include "reference.h"
@@ -19,7 +19,7 @@
 
 namespace {
 
-// --- 2. pole view (F3) ----------------------------------------------------------
+// --- 2. pole view ----------------------------------------------------------
 
 // Straight down the sphere's axis: the centre pixel of an odd-sized image is exactly the
 // -y ray, hitting the pole n = (0, 1, 0) where atan(0, 0) is undefined. The pole pixel's

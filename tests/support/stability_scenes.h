@@ -1,6 +1,6 @@
 // The scenes of the stability suite (tests/stability_*_test.cpp), built in code: one builder
 // per numerically hard case, shared so that the supersampled and filtered sweep renders every
-// scene again. Failure modes F1-F11 are in the accuracy notes (§4, §7).
+// scene again.
 #pragma once
 
 #include "scene.h"
