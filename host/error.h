@@ -27,10 +27,11 @@ std::string formatLoc(const FileLoc& loc, const std::string& message);
 
 struct Error : std::runtime_error {
   ErrorKind kind;
-  bool located = false;  // the message starts with file:line:col
+  bool located = false;  // the message starts with loc: file:line:col
+  FileLoc loc;
   Error(ErrorKind k, const std::string& message) : std::runtime_error(message), kind(k) {}
   Error(ErrorKind k, const FileLoc& where, const std::string& message)
-      : std::runtime_error(formatLoc(where, message)), kind(k), located(true) {}
+      : std::runtime_error(formatLoc(where, message)), kind(k), located(true), loc(where) {}
 };
 
 struct UsageError : Error {
@@ -38,9 +39,7 @@ struct UsageError : Error {
 };
 
 struct SceneError : Error {
-  FileLoc loc;
-  SceneError(const FileLoc& where, const std::string& message)
-      : Error(ErrorKind::Scene, where, message), loc(where) {}
+  SceneError(const FileLoc& where, const std::string& message) : Error(ErrorKind::Scene, where, message) {}
 };
 
 // An image file refused or undecodable; at the texture's location when a scene names it.

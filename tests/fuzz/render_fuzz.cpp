@@ -85,6 +85,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     gpuScene = buildGpuScene(scene, kSize, kSize);
   } catch (const SceneError&) {
     return 0;  // not a scene raytex renders: parser_fuzz.cpp checks the messages
+  } catch (const ImageInputError&) {
+    return 0;  // an image raytex does not load: likewise
   }
   Renderer& renderer = sharedRenderer();
   try {
