@@ -213,6 +213,19 @@ using uvec4 = glm::uvec4;
 #define OUTPUT_COORDS 1  // rgb = texture coordinate (u, v, w; w = 0 for 2D), a = HIT_*
 #define OUTPUT_ALBEDO 2  // rgb = texture colour (the diffuse coefficient), a = HIT_*
 
+// Passes (AOVs, host/passes.h): bit AOV_<NAME> of a kernel's pass mask. Each requested pass is
+// a plane of vec4 per pixel in BINDING_AOV, in bit order: its values in xyz (unused ones 0) and
+// the pixel's coverage in w (1 on a surface, 0 on the background, where xyz are 0 too).
+#define AOV_UV 0         // the mapped coordinate: (u, v, 0), or the solid coordinate for solid kinds
+#define AOV_NORMAL 1     // the unit normal facing the viewer, world axes
+#define AOV_DEPTH 2      // x: the ray's t from the eye (the primary ray's direction is unit length)
+#define AOV_POSITION 3   // the hit, camera-relative (the host adds the eye in double)
+#define AOV_ALBEDO 4     // the texture colour (the diffuse coefficient)
+#define AOV_FOOTPRINT 5  // xy: the box filter's footprint widths in texture space (FILTER_BOX)
+#define AOV_LOD 6        // x: the image's mip level (FILTER_BOX)
+#define AOV_OCTAVES 7    // x: the noise octaves kept (FILTER_BOX)
+#define AOV_COUNT 8
+
 // Alpha of the debug outputs: what the primary ray hit.
 #define HIT_NONE 0
 #define HIT_PLANE 1

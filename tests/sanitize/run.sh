@@ -2,15 +2,17 @@
 # The test suite built with ASan and UBSan, on lavapipe. Any sanitizer report fails the test
 # that caused it. CI runs this after the README's test command. Left out: the fuzz label (its
 # own ASan build), and the sweeps that render many scenes or kinds through kernel variants and
-# compare images (SWEEPS below). Their host path (packing, upload, pipelines, readback) is the
-# one every other render test runs here; what they add is shader coverage, which the README's
-# test command runs in full. Under the sanitizers they took 500 of
-# 1869 s of test time (2026-12-03).
+# compare images (SWEEPS below), and the command-line test `cli`. The sweeps' host path (packing,
+# upload, pipelines, readback) is the one every other render test runs here; what they add is
+# shader coverage, which the README's test command runs in full. `cli` starts raytex a few
+# hundred times to check exit codes and messages; the code it reaches (parsing, errors, output
+# files, renders) runs here through the unit, render, malformed and output tests. The benchmarks
+# are not built. Timings: docs/architecture.md, "Tests".
 # Usage: tests/sanitize/run.sh [BUILD_DIR]   (default build-sanitize)
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 build=${1:-build-sanitize}
-cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRAYTEX_SANITIZE=ON >/dev/null
+cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRAYTEX_SANITIZE=ON -DRAYTEX_BENCH=OFF >/dev/null
 cmake --build "$build"
 supp=$PWD/tests/sanitize
 # detect_leaks: on, with the driver's and loader's own allocations suppressed (lsan.supp says
@@ -20,4 +22,4 @@ export LSAN_OPTIONS=suppressions=$supp/lsan.supp:print_suppressions=0
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 export RAYTEX_SANITIZED=1  # tests/cli_test.sh, output_test.sh: skip the address-space limit tests (ASan's shadow needs terabytes)
 SWEEPS='BakedKernelsMatchTheUniformBuffers|(CourseScenes|Fields)RenderWhatTheOneKernelRenders|NoiseFilterTest|Shadow(Lists|Grids)RenderWhatTheTreeWalkRenders|RendersWhatTheLoopOverEverySphereRenders'
-ctest --test-dir "$build" -LE fuzz -E "$SWEEPS" --output-on-failure -j2
+ctest --test-dir "$build" -LE fuzz -E "^cli\$|$SWEEPS" --output-on-failure -j2

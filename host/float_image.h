@@ -1,0 +1,14 @@
+// Linear float images: what EXR and PFM files hold, what a pass is, and what `raytex diff`
+// compares. No Vulkan.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+struct FloatImage {
+  int width = 0;
+  int height = 0;
+  int channels = 4;           // floats per pixel: 1, 3 or 4 (RGBA)
+  std::vector<float> pixels;  // row 0 at the top, `channels` floats per pixel
+  float at(int x, int y, int c) const { return pixels[(size_t(y) * size_t(width) + size_t(x)) * size_t(channels) + size_t(c)]; }
+};
