@@ -30,6 +30,12 @@ uint32_t parseSpp(const std::string& flag, const std::string& text) {
   return n;
 }
 
+std::string parseFormat(const std::string& flag, const std::string& text) {
+  if (text != "png" && text != "exr" && text != "pfm")
+    throw UsageError(flag + " expects png, exr or pfm, got '" + text + "'");
+  return text;
+}
+
 bool parseFilter(const std::string& flag, const std::string& text) {
   if (text != "point" && text != "box") throw UsageError(flag + " expects point or box, got '" + text + "'");
   return text == "box";
@@ -53,8 +59,13 @@ struct CliOption {
 const CliOption kOptions[] = {
     {"--output", "-o", "FILE", kAll,
      "the PNG to write (default out.png; bench writes one only when given), atomically; a device or FIFO "
-     "is written through; - is standard output (render only); the scene's own files are refused",
+     "is written through; - is standard output (render only); the scene's own files are refused; DIR/ "
+     "(render): each scene's image as DIR/<scene>.png, required with several scenes",
      [](CliArgs& c, const std::string& f, const std::string& v) { c.render.output = nonEmpty(f, v, "a file name"); }},
+    {"--format", nullptr, "FORMAT", kRender,
+     "the format of the images written into -o DIR/: png (default), exr or pfm (a file's format comes from "
+     "its extension)",
+     [](CliArgs& c, const std::string& f, const std::string& v) { c.render.format = parseFormat(f, v); }},
     {"--width", nullptr, "W", kAll, "image width in pixels (default: the scene's render block, else 640)",
      [](CliArgs& c, const std::string& f, const std::string& v) { c.render.width = parseUint(f, v, 1, kMaxImageSide); }},
     {"--height", nullptr, "H", kAll, "image height in pixels (default: the scene's render block, else 480)",
@@ -113,7 +124,10 @@ const struct {
   unsigned bit;
   const char* summary;
 } kCommands[] = {
-    {CliCommand::Render, "render", kRender, "Ray-trace SCENE (a .cfg file) on a Vulkan device and write a PNG."},
+    {CliCommand::Render, "render", kRender,
+     "Ray-trace SCENE (a .cfg file) on a Vulkan device and write a PNG. Several scenes render one after "
+     "another on one device into -o DIR/; a scene that fails is reported and the others still render, and "
+     "the exit code is that of the first that failed."},
     {CliCommand::View, "view", kView,
      "Show SCENE in a window, rendered by the same kernel one sample per frame and accumulated while nothing "
      "changes, up to --spp samples. Saving the scene file reloads it; the title shows the materials, samples "
@@ -228,6 +242,21 @@ void refuseWithoutEffect(const CliArgs& cli, const std::vector<std::string>& giv
   if (cli.render.stats) throw UsageError("--stats prints to standard output, which -o - fills with the PNG");
 }
 
+// Several scenes write into a directory (-o DIR/), and --format applies only there.
+void checkBatch(const CliArgs& cli, const std::vector<std::string>& given) {
+  const RenderOptions& r = cli.render;
+  const bool directory = !r.output.empty() && r.output.back() == '/';
+  if (r.scenes.size() > 1 && !directory)
+    throw UsageError("several scenes write one image each: give -o DIR/ (a directory, ending in '/')");
+  if (directory && cli.command != CliCommand::Render)
+    throw UsageError("-o DIR/ is for raytex render; " + std::string(cli.command == CliCommand::View ? "view" : "bench") +
+                     " writes one file");
+  if (directory && r.reference) throw UsageError("--reference renders one scene; -o DIR/ is for several");
+  if (directory && r.stats) throw UsageError("--stats times one render; -o DIR/ renders several");
+  if (!directory && std::find(given.begin(), given.end(), "--format") != given.end())
+    throw UsageError("--format applies to -o DIR/; a file's format comes from its extension");
+}
+
 }  // namespace
 
 CliArgs parseCli(const std::vector<std::string>& args) {
@@ -241,15 +270,17 @@ CliArgs parseCli(const std::vector<std::string>& args) {
     if (a == "--help" || a == "-h") return CliArgs{};
     if (!a.empty() && a[0] == '-' && a != "-") {
       given.push_back(applyOption(args, &i, &cli).name);
-    } else if (cli.render.scene.empty()) {
-      cli.render.scene = a;
+    } else if (cli.render.scene.empty() || cli.command == CliCommand::Render) {
+      if (cli.render.scene.empty()) cli.render.scene = a;
+      cli.render.scenes.push_back(a);
     } else {
-      throw UsageError("more than one scene given ('" + cli.render.scene + "', '" + a + "')");
+      throw UsageError("more than one scene given ('" + cli.render.scene + "', '" + a + "'); only render takes several");
     }
   }
   if (cli.render.scene.empty())
     throw UsageError(args[0] + " needs a scene file (e.g. raytex " + args[0] + " scenes/textures.cfg)");
   refuseWithoutEffect(cli, given);
+  checkBatch(cli, given);
   const bool outputGiven = std::find(given.begin(), given.end(), "--output") != given.end();
   if (cli.command == CliCommand::Bench && !outputGiven) cli.render.output.clear();
   const char* env = getenv("RAYTEX_VALIDATION");
@@ -299,7 +330,7 @@ std::string optionSignature(const CliOption& o) {
 }
 
 std::string synopsis(const char* command, unsigned bit) {
-  std::string words = std::string("raytex ") + command + " SCENE";
+  std::string words = std::string("raytex ") + command + (bit == kRender ? " SCENE..." : " SCENE");
   for (const CliOption& o : kOptions)
     if (o.commands & bit) {
       std::string shortest = o.alias ? o.alias : o.name;

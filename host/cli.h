@@ -13,8 +13,10 @@
 enum class CliCommand { Help, Version, Render, View, Bench, Devices };
 
 struct RenderOptions {
-  std::string scene;
-  std::string output = "out.png";  // "-": standard output
+  std::string scene;  // the first scene given
+  std::vector<std::string> scenes;  // render: every scene given, in order (several: a batch into -o DIR/)
+  std::string output = "out.png";  // "-": standard output; ending in '/': a directory (batch.h)
+  std::string format = "png";  // --format: the images' format in -o DIR/ (png, exr or pfm)
   std::optional<uint32_t> width, height;  // flags; else the scene's render block; else 640x480
   int device = -1;        // --device N; -1: best available
   std::optional<uint32_t> samplesPerPixel;  // --spp: a square N*N, stratified, box filtered

@@ -8,6 +8,7 @@
 #include "renderer.h"
 
 #include <algorithm>
+#include <new>
 #include <cmath>
 #include <cstdio>
 
@@ -119,15 +120,12 @@ ImageRGBA8 renderImage(Renderer& renderer, bool perSample, uint32_t extraFrames,
   return image;
 }
 
-// Everything on the device: creation, upload, pipelines, the image read back.
-ImageRGBA8 renderOnDevice(Renderer& renderer, const RenderOptions& options, const Scene& scene,
-                          const GpuScene& gpuScene, uint32_t extraFrames, HeadlessRender* out, bool steady,
-                          std::chrono::steady_clock::time_point& t) {
+// Upload, pipelines and the image read back, on a renderer created by the caller.
+ImageRGBA8 renderPrepared(Renderer& renderer, const Scene& scene, const GpuScene& gpuScene, uint32_t extraFrames,
+                          HeadlessRender* out, bool steady, std::chrono::steady_clock::time_point& t) {
   const RenderJob& job = out->job;
   PhaseTimes& times = out->times;
-  createRenderer(renderer, {options.device, options.validate});
-  out->deviceName = renderer.device.properties.deviceName;
-  times.device = lapMs(t);
+  const int errorsBefore = renderer.device.validationErrors;
   if (renderer.device.lavapipe) checkLoopLimit(scene);
   const bool perSample = samplesPerDispatch(renderer, scene, gpuScene, job);
   renderer.accumulate = perSample;
@@ -137,9 +135,33 @@ ImageRGBA8 renderOnDevice(Renderer& renderer, const RenderOptions& options, cons
                    steady ? INFINITY : double(job.samplesPerPixel) * (1 + extraFrames));
   times.pipeline = lapMs(t);
   ImageRGBA8 image = renderImage(renderer, perSample, extraFrames, out, t);
-  if (renderer.device.validationErrors > 0)
-    throw VulkanError(std::to_string(renderer.device.validationErrors) + " Vulkan validation error(s)");
+  if (renderer.device.validationErrors > errorsBefore)
+    throw VulkanError(std::to_string(renderer.device.validationErrors - errorsBefore) + " Vulkan validation error(s)");
   return image;
+}
+
+// Everything on the device: creation, then renderPrepared.
+ImageRGBA8 renderOnDevice(Renderer& renderer, const RenderOptions& options, const Scene& scene,
+                          const GpuScene& gpuScene, uint32_t extraFrames, HeadlessRender* out, bool steady,
+                          std::chrono::steady_clock::time_point& t) {
+  createRenderer(renderer, {options.device, options.validate});
+  out->deviceName = renderer.device.properties.deviceName;
+  out->times.device = lapMs(t);
+  return renderPrepared(renderer, scene, gpuScene, extraFrames, out, steady, t);
+}
+
+// One scene of a batch on the batch's renderer: parsed, rendered and written.
+void renderBatchItem(Renderer& renderer, const RenderOptions& options, const BatchItem& item) {
+  RenderOptions one = options;
+  one.scene = item.scene;
+  one.scenes = {item.scene};
+  one.output = item.output;
+  HeadlessRender out;
+  std::chrono::steady_clock::time_point t = std::chrono::steady_clock::now();
+  Scene scene;
+  const GpuScene gpuScene = prepareScene(one, &scene, &out);
+  ImageRGBA8 image = renderPrepared(renderer, scene, gpuScene, 0, &out, false, t);
+  savePng(one.output, image, out.nonFinite);
 }
 
 }  // namespace
@@ -161,4 +183,28 @@ void renderHeadless(const RenderOptions& options, uint32_t extraFrames, Headless
   t = std::chrono::steady_clock::now();  // device teardown is not a phase
   savePng(options.output, image, out->nonFinite);
   out->times.encode = lapMs(t);
+}
+
+BatchResult renderBatch(const RenderOptions& options, const std::vector<BatchItem>& items) {
+  Renderer renderer;
+  BatchResult result;
+  try {
+    createRenderer(renderer, {options.device, options.validate});
+    for (const BatchItem& item : items) {
+      try {
+        renderBatchItem(renderer, options, item);
+      } catch (const Error& e) {
+        fprintf(stderr, "%s\n", errorLine(e).c_str());
+        if (result.failed++ == 0) result.firstFailure = e.kind;
+      } catch (const std::bad_alloc&) {
+        fprintf(stderr, "raytex: out of memory rendering '%s'\n", item.scene.c_str());
+        if (result.failed++ == 0) result.firstFailure = ErrorKind::OutOfMemory;
+      }
+    }
+  } catch (...) {
+    destroyRenderer(renderer);
+    throw;
+  }
+  destroyRenderer(renderer);
+  return result;
 }

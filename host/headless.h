@@ -1,7 +1,9 @@
 // One headless render, phase by phase: what `raytex render` runs and `raytex bench` times.
 #pragma once
 
+#include "batch.h"
 #include "cli.h"
+#include "error.h"
 #include "image_io.h"
 
 #include <chrono>
@@ -42,3 +44,13 @@ void savePng(const std::string& output, const ImageRGBA8& image, size_t nonFinit
 // with nothing written. `steady`: tile kernels wherever they save time per frame, not only
 // where they pay for their pipelines in this render.
 void renderHeadless(const RenderOptions& options, uint32_t extraFrames, HeadlessRender* out, bool steady = false);
+
+struct BatchResult {
+  size_t failed = 0;  // scenes that failed, each reported on stderr as it failed
+  ErrorKind firstFailure = ErrorKind::Internal;  // the kind of the first that failed
+};
+
+// Renders each item's scene on one device, one after another, writing its output as render
+// does (a scene's failure is reported on stderr and the next one renders). Throws an Error when
+// the device cannot be created.
+BatchResult renderBatch(const RenderOptions& options, const std::vector<BatchItem>& items);

@@ -56,7 +56,18 @@ void runReference(const RenderOptions& options) {
            job.width, job.height, job.samplesPerPixel);
 }
 
+// Several scenes (or -o DIR/): one device, one image each; the first failure's kind is the
+// process's, behind a summary line.
+void runBatch(const RenderOptions& options) {
+  const std::string extension = "." + options.format;
+  const BatchResult result = renderBatch(options, planBatch(options.scenes, options.output, extension));
+  if (result.failed > 0)
+    throw Error(result.firstFailure, std::to_string(result.failed) + " of " + std::to_string(options.scenes.size()) +
+                                         " scenes failed");
+}
+
 void runRender(const RenderOptions& options) {
+  if (isOutputDirectory(options.output)) return runBatch(options);
   if (options.output == "-" && isatty(fileno(stdout)))
     throw UsageError("-o - writes the PNG to standard output, which is a terminal");
   if (options.reference) return runReference(options);

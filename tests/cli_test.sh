@@ -5,7 +5,7 @@
 set -u
 source "$(dirname "$0")/cli_checks.sh"
 
-expect help 0 '^  raytex render SCENE \[-o FILE\]' -- "$raytex" --help
+expect help 0 '^  raytex render SCENE\.\.\. \[-o FILE\]' -- "$raytex" --help
 expect help-kinds 0 'texture kinds: image, checker, solid_checker, [a-z_, ]+ or [a-z_]+$' -- "$raytex" --help
 expect no-args 2 '^raytex: missing command' -- "$raytex"
 expect unknown-command 2 "unknown command 'draw'" -- "$raytex" draw x
