@@ -50,8 +50,8 @@ waitWindow() {
 viewer=$!
 waitWindow "$tmp/view.log" window-opens
 title() { xdotool getwindowname "$wid"; }
-waitTitle() {  # waitTitle PATTERN: the title matches within 10 s
-  for _ in $(seq 100); do title | grep -q -- "$1" && return 0; sleep 0.1; done
+waitTitle() {  # waitTitle PATTERN: the title matches within 30 s (a loaded machine, the sanitizers)
+  for _ in $(seq 300); do title | grep -q -- "$1" && return 0; sleep 0.1; done
   echo "title: $(title)"
   return 1
 }
@@ -72,7 +72,7 @@ cp "$tmp/shot.png" "$tmp/first.png"
 waitShot() {  # waitShot: F12, then the new file appears
   rm -f "$tmp/shot.png"
   xdotool key --window "$wid" F12
-  for _ in $(seq 100); do [ -s "$tmp/shot.png" ] && return 0; sleep 0.1; done
+  for _ in $(seq 300); do [ -s "$tmp/shot.png" ] && return 0; sleep 0.1; done
   return 1
 }
 xdotool key --window "$wid" d d w
