@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
+#include <cctype>
 #include <cstdlib>
 
 namespace {
@@ -34,6 +35,16 @@ std::string parseFormat(const std::string& flag, const std::string& text) {
   if (text != "png" && text != "exr" && text != "pfm")
     throw UsageError(flag + " expects png, exr or pfm, got '" + text + "'");
   return text;
+}
+
+uint32_t parseDepth(const std::string& flag, const std::string& text) {
+  if (text != "8" && text != "16") throw UsageError(flag + " expects 8 or 16, got '" + text + "'");
+  return text == "16" ? 16 : 8;
+}
+
+bool parseMetadata(const std::string& flag, const std::string& text) {
+  if (text != "basic" && text != "full") throw UsageError(flag + " expects basic or full, got '" + text + "'");
+  return text == "full";
 }
 
 bool parseFilter(const std::string& flag, const std::string& text) {
@@ -66,6 +77,19 @@ const CliOption kOptions[] = {
      "the format of the images written into -o DIR/: png (default), exr or pfm (a file's format comes from "
      "its extension)",
      [](CliArgs& c, const std::string& f, const std::string& v) { c.render.format = parseFormat(f, v); }},
+    {"--depth", nullptr, "BITS", kRender, "bits per channel of a PNG output: 8 (default) or 16",
+     [](CliArgs& c, const std::string& f, const std::string& v) { c.render.pngDepth = parseDepth(f, v); }},
+    {"--half", nullptr, nullptr, kRender, "write an EXR output in half floats (default 32-bit float; position stays float)",
+     [](CliArgs& c, const std::string&, const std::string&) { c.render.half = true; }},
+    {"--metadata", nullptr, "WHAT", kRender,
+     "metadata in the output (PNG text chunks, EXR attributes): basic (default: raytex version, size, spp, "
+     "filter; the same for every render of a view) or full (also the scene path, device and render time)",
+     [](CliArgs& c, const std::string& f, const std::string& v) { c.render.fullMetadata = parseMetadata(f, v); }},
+    {"--aov", nullptr, "PASSES", kRender,
+     "passes to write with the image, comma-separated: uv, normal, depth, position, albedo, footprint, lod, "
+     "octaves (the last three need --filter box): layers of an EXR, else files OUT.PASS.pfm (.png for albedo) "
+     "beside it; docs/outputs.md",
+     [](CliArgs& c, const std::string& f, const std::string& v) { c.render.passes = parsePassList(f, v); }},
     {"--width", nullptr, "W", kAll, "image width in pixels (default: the scene's render block, else 640)",
      [](CliArgs& c, const std::string& f, const std::string& v) { c.render.width = parseUint(f, v, 1, kMaxImageSide); }},
     {"--height", nullptr, "H", kAll, "image height in pixels (default: the scene's render block, else 480)",
@@ -257,6 +281,29 @@ void checkBatch(const CliArgs& cli, const std::vector<std::string>& given) {
     throw UsageError("--format applies to -o DIR/; a file's format comes from its extension");
 }
 
+// The output's format as the options name it: --format for -o DIR/, PNG for standard output,
+// else the file's extension in lower case ("" without one).
+std::string outputFormatName(const RenderOptions& r) {
+  if (!r.output.empty() && r.output.back() == '/') return r.format;
+  if (r.output == "-") return "png";
+  const size_t dot = r.output.find_last_of('.');
+  if (dot == std::string::npos || r.output.find('/', dot) != std::string::npos) return "";
+  std::string ext = r.output.substr(dot + 1);
+  for (char& ch : ext) ch = char(tolower(static_cast<unsigned char>(ch)));
+  return ext;
+}
+
+// Options of one output format or of files on disk, refused where they would do nothing.
+void checkOutputOptions(const CliArgs& cli, const std::vector<std::string>& given) {
+  auto has = [&](const char* name) { return std::find(given.begin(), given.end(), name) != given.end(); };
+  const std::string format = outputFormatName(cli.render);
+  if (has("--depth") && format != "png") throw UsageError("--depth applies to a PNG output");
+  if (has("--half") && format != "exr") throw UsageError("--half applies to an EXR output");
+  if (cli.render.passes.empty()) return;
+  if (cli.render.output == "-") throw UsageError("--aov writes files beside the image; -o - writes one PNG to standard output");
+  if (cli.render.reference) throw UsageError("--aov comes from the Vulkan kernel; --reference writes the image only");
+}
+
 }  // namespace
 
 CliArgs parseCli(const std::vector<std::string>& args) {
@@ -281,6 +328,7 @@ CliArgs parseCli(const std::vector<std::string>& args) {
     throw UsageError(args[0] + " needs a scene file (e.g. raytex " + args[0] + " scenes/textures.cfg)");
   refuseWithoutEffect(cli, given);
   checkBatch(cli, given);
+  checkOutputOptions(cli, given);
   const bool outputGiven = std::find(given.begin(), given.end(), "--output") != given.end();
   if (cli.command == CliCommand::Bench && !outputGiven) cli.render.output.clear();
   const char* env = getenv("RAYTEX_VALIDATION");
@@ -296,6 +344,9 @@ RenderJob resolveJob(const RenderOptions& options, const RenderSettings& s, uint
       options.samplesPerPixel.value_or(s.samplesPerPixel ? uint32_t(*s.samplesPerPixel) : defaultSamplesPerPixel);
   job.samplesPerSide = uint32_t(std::lround(std::sqrt(double(job.samplesPerPixel))));
   job.filterBox = options.filter.value_or(s.filterBox.value_or(false));
+  for (Pass p : options.passes)
+    if (passInfo(p).boxFilterOnly && !job.filterBox)
+      throw UsageError("--aov " + std::string(passInfo(p).name) + " comes from the box filter: add --filter box");
   if (uint64_t(job.width) * job.height > kMaxPixels)
     throw UsageError(std::to_string(job.width) + "x" + std::to_string(job.height) + " exceeds the limit of " +
                      std::to_string(kMaxPixels) + " pixels (8192x8192)");

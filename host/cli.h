@@ -2,6 +2,7 @@
 // reference in docs/cli.md all read. No Vulkan.
 #pragma once
 
+#include "passes.h"
 #include "scene.h"
 #include "scene_images.h"
 
@@ -17,6 +18,10 @@ struct RenderOptions {
   std::vector<std::string> scenes;  // render: every scene given, in order (several: a batch into -o DIR/)
   std::string output = "out.png";  // "-": standard output; ending in '/': a directory (batch.h)
   std::string format = "png";  // --format: the images' format in -o DIR/ (png, exr or pfm)
+  uint32_t pngDepth = 8;       // --depth 8 or 16: bits per channel of a PNG output
+  bool half = false;           // --half: an EXR output in half floats (position stays float)
+  bool fullMetadata = false;   // --metadata full: also the scene path, device and render time
+  std::vector<Pass> passes;    // --aov: passes written with the image (passes.h)
   std::optional<uint32_t> width, height;  // flags; else the scene's render block; else 640x480
   int device = -1;        // --device N; -1: best available
   std::optional<uint32_t> samplesPerPixel;  // --spp: a square N*N, stratified, box filtered

@@ -101,3 +101,31 @@ TEST(CliTable, EveryOptionIsInTheHelp) {
   }
   EXPECT_GE(rows, 14u);
 }
+
+TEST(CliTable, OutputFormatOptionsApplyToTheirFormatOnly) {
+  EXPECT_EQ(refusal({"render", "s.cfg", "-o", "x.png", "--depth", "16"}), "");
+  EXPECT_EQ(refusal({"render", "s.cfg", "-o", "X.PNG", "--depth=16"}), "");
+  EXPECT_EQ(refusal({"render", "s.cfg", "-o", "x.exr", "--depth", "16"}), "--depth applies to a PNG output");
+  EXPECT_EQ(refusal({"render", "s.cfg", "-o", "x.png", "--depth", "12"}), "--depth expects 8 or 16, got '12'");
+  EXPECT_EQ(refusal({"render", "s.cfg", "-o", "x.exr", "--half"}), "");
+  EXPECT_EQ(refusal({"render", "s.cfg", "-o", "d/", "--format", "exr", "--half"}), "");
+  EXPECT_EQ(refusal({"render", "s.cfg", "-o", "x.pfm", "--half"}), "--half applies to an EXR output");
+  EXPECT_EQ(refusal({"render", "s.cfg", "--metadata", "all"}), "--metadata expects basic or full, got 'all'");
+  EXPECT_TRUE(parseCli({"render", "s.cfg", "--metadata", "full"}).render.fullMetadata);
+}
+
+TEST(CliTable, PassesAreNamedAndNeedFilesAndTheBoxFilterWhereTheyComeFromIt) {
+  const CliArgs cli = parseCli({"render", "s.cfg", "-o", "x.exr", "--aov", "depth,uv,depth"});
+  ASSERT_EQ(cli.render.passes.size(), 2u);
+  EXPECT_EQ(cli.render.passes[0], Pass::Uv);
+  EXPECT_EQ(cli.render.passes[1], Pass::Depth);
+  EXPECT_EQ(refusal({"render", "s.cfg", "--aov", "uv,colour"}),
+            "--aov: unknown pass 'colour' (passes: uv, normal, depth, position, albedo, footprint, lod, octaves)");
+  EXPECT_NE(refusal({"render", "s.cfg", "-o", "-", "--aov", "uv"}), "");
+  EXPECT_NE(refusal({"render", "s.cfg", "--reference", "--aov", "uv"}), "");
+  EXPECT_NE(refusal({"view", "s.cfg", "--aov", "uv"}), "");
+  RenderOptions options = parseCli({"render", "s.cfg", "--aov", "lod"}).render;
+  EXPECT_THROW(resolveJob(options, RenderSettings{}, 1), UsageError);
+  options.filter = true;
+  EXPECT_NO_THROW(resolveJob(options, RenderSettings{}, 1));
+}
