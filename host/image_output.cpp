@@ -68,8 +68,9 @@ std::string passFilePath(const OutputSpec& spec, Pass pass) {
   return stem + "." + info.name + (info.fitsUnit ? ".png" : ".pfm");
 }
 
-ImageOutput::ImageOutput(const OutputSpec& spec) : spec_(spec), rowWritten_(size_t(std::max(spec.height, 0))) {
+ImageOutput::ImageOutput(const OutputSpec& spec) : spec_(spec) {
   checkSpec(spec);
+  rowWritten_.assign(size_t(spec.height), false);
   paths_.push_back(spec.path);
   if (spec.format == OutputFormat::Exr)
     sinks_.push_back(makeExrSink(spec));

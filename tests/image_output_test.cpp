@@ -14,7 +14,9 @@
 #include <csignal>
 #include <cstring>
 #include <filesystem>
+#include <functional>
 #include <iterator>
+#include <map>
 #include <set>
 #include <thread>
 
@@ -290,6 +292,7 @@ TEST(ImageOutput, ExrHoldsTheFloatsThePassesAsLayersAndTheMetadata) {
   for (auto it = file.header().channels().begin(); it != file.header().channels().end(); ++it)
     EXPECT_EQ(it.channel().type, Imf::FLOAT) << it.name();
   EXPECT_EQ(file.header().lineOrder(), Imf::INCREASING_Y);
+  EXPECT_EQ(file.header().compression(), Imf::ZIP_COMPRESSION);
   for (const auto& [key, value] : spec.metadata) {
     const auto* attribute = file.header().findTypedAttribute<Imf::StringAttribute>(key);
     ASSERT_NE(attribute, nullptr) << key;
@@ -439,6 +442,27 @@ TEST(ImageOutput, DestroyedBeforeFinishItLeavesNoFileAndNoTemporary) {
     EXPECT_EQ(readFile(dir / name), "old") << name;
     EXPECT_EQ(readFile(dir / "out.normal.pfm"), "old pass") << name;
   }
+}
+
+TEST(ImageOutput, RowsMissingOrWrittenTwiceAreRefusedAndNothingIsWritten) {
+  const fs::path dir = freshTempDir("image_output_rows");
+  const BandImage image = bandImage(5, 6, {});
+  const auto kindOf = [](const std::function<void()>& step) {
+    try {
+      step();
+    } catch (const Error& e) {
+      return e.kind;
+    }
+    return ErrorKind::Usage;  // not thrown
+  };
+  for (const char* name : {"a.png", "a.exr", "a.pfm"}) {
+    ImageOutput output(bandSpec((dir / name).string(), outputFormatFor(name), image, {}));
+    output.writeBand(0, 2, image.rgba.data(), {});
+    EXPECT_EQ(kindOf([&] { output.writeBand(1, 2, image.rgba.data(), {}); }), ErrorKind::Internal) << name;
+    EXPECT_EQ(kindOf([&] { output.writeBand(5, 2, image.rgba.data(), {}); }), ErrorKind::Internal) << name;
+    EXPECT_EQ(kindOf([&] { output.finish(); }), ErrorKind::Internal) << name;
+  }
+  EXPECT_EQ(entries(dir), 0u);
 }
 
 TEST(ImageOutput, ASignalRemovesEveryTemporaryOfTheImage) {
