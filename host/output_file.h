@@ -1,15 +1,15 @@
-// Output files: how raytex writes a PNG without ever destroying what is there. No Vulkan.
+// Output files: how raytex writes an image without ever destroying what is there. No Vulkan.
 //
-// - A new or existing regular file is written whole through a temporary file beside it and a
-//   rename: the path is either the complete new file or untouched. An existing file keeps its
-//   mode; a new one gets 0666 & ~umask. The temporary name fits the directory's name limit.
+// - A new or existing regular file is written through a temporary file beside it and a rename
+//   at commit: the path is either the complete new file or untouched. An existing file keeps
+//   its mode; a new one gets 0666 & ~umask. The temporary name fits the directory's name limit.
 // - A symbolic link is followed: the rename replaces its target, and the link stays.
 // - An existing non-regular file (a device such as /dev/null, a FIFO) is written through
 //   directly, as other tools do; that write is not atomic. A FIFO with no reader is an error,
-//   not a wait.
-// - SIGINT, SIGTERM and SIGHUP during the write remove the temporary file, then end the process
-//   with the signal's default action; SIGXFSZ is ignored so that a file size limit becomes a
-//   write error.
+//   not a wait. "-" is standard output.
+// - While a temporary file exists, SIGINT, SIGTERM and SIGHUP remove it (every open one), then
+//   end the process with the signal's default action; while any output is open, SIGXFSZ is
+//   ignored so that a file size limit becomes a write error.
 #pragma once
 
 #include "image_io.h"
@@ -19,11 +19,52 @@
 #include <string>
 #include <vector>
 
-// Writes `bytes` to `path` as described above. Throws IoError naming the path.
+// The format an output file is written in.
+enum class OutputFormat { Png, Exr, Pfm };
+
+// The format `path`'s extension names: .png, .exr or .pfm, any case. Standard output ("-") and
+// existing devices and FIFOs are PNG unless their name ends in one of these. Throws UsageError
+// for any other path ("'x.jpg': unknown output format (supported: .png, .exr, .pfm)").
+OutputFormat outputFormatFor(const std::string& path);
+
+// One output written as described above, in one or several writes: opened (the temporary
+// created, or the device or FIFO opened) on construction, made visible by commit(). Destroyed
+// without commit, it removes its temporary and the path keeps what it held. Every failure
+// throws IoError naming the path.
+class OutputFile {
+ public:
+  explicit OutputFile(const std::string& path);
+  ~OutputFile();
+  OutputFile(const OutputFile&) = delete;
+  OutputFile& operator=(const OutputFile&) = delete;
+
+  const std::string& path() const { return path_; }
+  // A regular file (through its temporary): writeAt may place bytes anywhere.
+  bool seekable() const { return kind_ == Kind::Replace; }
+  // Appends `size` bytes after what write() wrote before.
+  void write(const uint8_t* data, size_t size);
+  void write(const std::vector<uint8_t>& bytes) { write(bytes.data(), bytes.size()); }
+  // Writes `size` bytes at `offset` (seekable outputs only), growing the file as needed.
+  void writeAt(uint64_t offset, const uint8_t* data, size_t size);
+  // Closes the output and, for a regular file, renames the temporary onto the path.
+  void commit();
+
+ private:
+  enum class Kind { Replace, Through, Stdout };
+  std::string path_;
+  std::string target_;  // the path with its links followed
+  std::string temp_;    // Replace: the temporary file
+  Kind kind_ = Kind::Replace;
+  int fd_ = -1;
+  int slot_ = -1;  // Replace: the temporary's place among those signals remove
+  bool signalsHeld_ = false;
+  bool committed_ = false;
+};
+
+// Writes `bytes` to `path` through an OutputFile. Throws IoError naming the path.
 void writeFileAtomic(const std::string& path, const std::vector<uint8_t>& bytes);
 
-// Writes `bytes` to `path` with writeFileAtomic, or to standard output when `path` is "-".
-// Throws IoError.
+// Writes `bytes` to `path` with writeFileAtomic ("-": standard output). Throws IoError.
 void writeOutput(const std::string& path, const std::vector<uint8_t>& bytes);
 
 // Encodes `image` as PNG (encodePng) and writes it with writeOutput.
@@ -39,6 +80,6 @@ std::string tempTemplate(const std::string& path, size_t nameMax);
 std::string outputClash(const std::string& output, const Scene& scene);
 
 // Throws UsageError when raytex may not write `output` for this scene: one of its files
-// (outputClash), or a regular file whose name does not end in .png. Devices, FIFOs, "-"
+// (outputClash), or a file of no output format (outputFormatFor). Devices, FIFOs, "-"
 // (standard output) and "" (no output) pass.
 void checkOutput(const std::string& output, const Scene& scene);

@@ -127,7 +127,7 @@ done
 check no-effect-no-output test ! -e "$tmp/no-effect.png"
 expect bench-stats 2 '^raytex: --stats is an option of raytex render and view, not of bench$' -- \
   "$raytex" bench "$src/scenes/textures.cfg" --stats
-expect output-extension 2 "^raytex: cannot write '$tmp/out.jpg': raytex writes PNG files \(.png\), or - for standard output$" -- \
+expect output-extension 2 "^raytex: '$tmp/out.jpg': unknown output format \(supported: .png, .exr, .pfm\)$" -- \
   "$raytex" render "$src/scenes/textures.cfg" -o "$tmp/out.jpg" --width 8 --height 6
 check output-extension-nothing-written test ! -e "$tmp/out.jpg"
 expect output-extension-case 0 '' -- "$raytex" render "$src/scenes/textures.cfg" -o "$tmp/upper.PNG" --width 8 --height 6

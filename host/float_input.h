@@ -1,0 +1,20 @@
+// Float image files read whole, linear as stored, for comparison (`raytex diff`, through
+// readLinearImage): EXR (OpenEXR) and PFM. Each is checked as image_load.h checks PNG and JPEG,
+// before any pixel is allocated: a regular file, the format's magic number, a size of 1 to
+// kMaxImageFileSide a side, width x height x 12 bytes within the caller's budget; then data that
+// is all there and decodes. Values that are not finite are kept (the caller decides). No Vulkan.
+#pragma once
+
+#include "float_image.h"
+
+#include <cstdint>
+#include <string>
+
+// The R, G and B channels of a scanline or tiled EXR (its first level), or its Y channel as
+// grey: 3 channels, row 0 at the top of the data window. Throws ImageInputError
+// ("path: message").
+FloatImage readExr(const std::string& path, uint64_t maxBytes);
+
+// A PFM: "PF" (RGB) or "Pf" (grey, given as RGB), either byte order (the sign of its scale),
+// its exact length. 3 channels, row 0 at the top. Throws ImageInputError ("path: message").
+FloatImage readPfm(const std::string& path, uint64_t maxBytes);

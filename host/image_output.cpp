@@ -1,0 +1,120 @@
+#include "image_output.h"
+
+#include "band_sink.h"
+#include "error.h"
+#include "exr_output.h"
+#include "pfm_output.h"
+#include "png_output.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <set>
+
+namespace {
+
+// Attribute names every EXR header defines, or that name its parts: a string attribute of the
+// same name would replace or contradict them.
+const char* const kExrHeaderNames[] = {"channels", "compression", "dataWindow", "displayWindow",
+                                       "lineOrder", "pixelAspectRatio", "screenWindowCenter",
+                                       "screenWindowWidth", "tiles", "type", "name", "version",
+                                       "chunkCount", "view", "multiView"};
+
+// Why `key` cannot be a PNG keyword, or null.
+const char* badKeyword(const std::string& key) {
+  if (key.empty() || key.size() > 79) return "it must be 1 to 79 characters";
+  for (char c : key)
+    if (c < 32 || c > 126) return "it must be printable ASCII";
+  if (key.front() == ' ' || key.back() == ' ' || key.find("  ") != std::string::npos)
+    return "it must not start or end with a space or hold two in a row";
+  return nullptr;
+}
+
+void checkSpec(const OutputSpec& spec) {
+  if (spec.width <= 0 || spec.height <= 0 || (spec.pngDepth != 8 && spec.pngDepth != 16))
+    throw Error(ErrorKind::Internal, "'" + spec.path + "': an output of " + std::to_string(spec.width) + "x" +
+                                         std::to_string(spec.height) + " at " + std::to_string(spec.pngDepth) +
+                                         " bits");
+  checkMetadata(spec.metadata, spec.format);
+  if (spec.path == "-" && spec.format != OutputFormat::Exr && !spec.passes.empty())
+    throw UsageError("passes beside standard output need files of their own: name an output file, or write EXR");
+}
+
+// The writer of one pass's file beside a PNG or PFM.
+std::unique_ptr<BandSink> passSink(const OutputSpec& spec, size_t index) {
+  const PassInfo& info = passInfo(spec.passes[index]);
+  const std::string path = passFilePath(spec, info.pass);
+  if (info.fitsUnit) return makePngSink(path, spec.width, spec.height, 8, int(index), info.channels, spec.metadata);
+  return makePfmSink(path, spec.width, spec.height, int(index), info.channels);
+}
+
+}  // namespace
+
+void checkMetadata(const Metadata& metadata, OutputFormat format) {
+  std::set<std::string> seen;
+  for (const auto& [key, value] : metadata) {
+    if (const char* why = badKeyword(key)) throw UsageError("metadata key '" + key + "': " + why);
+    if (!seen.insert(key).second) throw UsageError("metadata key '" + key + "' is given twice");
+    if (value.find('\0') != std::string::npos) throw UsageError("metadata value of '" + key + "' holds a NUL byte");
+    if (format == OutputFormat::Exr &&
+        std::find(std::begin(kExrHeaderNames), std::end(kExrHeaderNames), key) != std::end(kExrHeaderNames))
+      throw UsageError("metadata key '" + key + "' names an attribute every EXR file defines");
+  }
+}
+
+std::string passFilePath(const OutputSpec& spec, Pass pass) {
+  if (spec.format == OutputFormat::Exr) return "";
+  const PassInfo& info = passInfo(pass);
+  const std::string stem = std::filesystem::path(spec.path).replace_extension().string();
+  return stem + "." + info.name + (info.fitsUnit ? ".png" : ".pfm");
+}
+
+ImageOutput::ImageOutput(const OutputSpec& spec) : spec_(spec) {
+  checkSpec(spec);
+  rowWritten_.assign(size_t(spec.height), false);
+  paths_.push_back(spec.path);
+  if (spec.format == OutputFormat::Exr)
+    sinks_.push_back(makeExrSink(spec));
+  else if (spec.format == OutputFormat::Png)
+    sinks_.push_back(makePngSink(spec.path, spec.width, spec.height, spec.pngDepth, -1, 3, spec.metadata));
+  else
+    sinks_.push_back(makePfmSink(spec.path, spec.width, spec.height, -1, 3));
+  if (spec.format == OutputFormat::Exr) return;
+  for (size_t i = 0; i < spec.passes.size(); ++i) {
+    paths_.push_back(passFilePath(spec, spec.passes[i]));
+    sinks_.push_back(passSink(spec, i));
+  }
+}
+
+ImageOutput::~ImageOutput() = default;
+
+bool ImageOutput::bottomUp() const {
+  return std::any_of(sinks_.begin(), sinks_.end(), [](const auto& sink) { return sink->bottomUp(); });
+}
+
+void ImageOutput::writeBand(int firstRow, int rows, const float* rgba, const std::vector<const float*>& passes) {
+  const bool inside = firstRow >= 0 && rows > 0 && rows <= spec_.height - firstRow;
+  if (!inside || passes.size() != spec_.passes.size())
+    throw Error(ErrorKind::Internal, "'" + spec_.path + "': a band of rows " + std::to_string(firstRow) + " to " +
+                                         std::to_string(firstRow + rows - 1) + " with " +
+                                         std::to_string(passes.size()) + " passes");
+  for (int y = firstRow; y < firstRow + rows; ++y) {
+    if (rowWritten_[size_t(y)])
+      throw Error(ErrorKind::Internal, "'" + spec_.path + "': row " + std::to_string(y) + " written twice");
+    rowWritten_[size_t(y)] = true;
+  }
+  const Band band{firstRow, rows, rgba, passes};
+  for (auto& sink : sinks_) sink->write(band);
+}
+
+void ImageOutput::finish() {
+  const auto missing = std::find(rowWritten_.begin(), rowWritten_.end(), false);
+  if (missing != rowWritten_.end())
+    throw Error(ErrorKind::Internal, "'" + spec_.path + "': row " +
+                                         std::to_string(missing - rowWritten_.begin()) + " was never written");
+  for (auto& sink : sinks_) sink->complete();
+  for (auto& sink : sinks_) sink->commit();
+}
+
+size_t ImageOutput::nonFinite() const { return sinks_.front()->nonFinite(); }
+
+std::vector<std::string> ImageOutput::paths() const { return paths_; }
