@@ -5,9 +5,11 @@
 #include "gpu_scene.h"
 #include "output_file.h"
 #include "parser.h"
+#include "render_output.h"
 #include "renderer.h"
 
 #include <algorithm>
+#include <memory>
 #include <new>
 #include <cmath>
 #include <cstdio>
@@ -19,20 +21,13 @@ double lapMs(std::chrono::steady_clock::time_point& start) {
   return ms;
 }
 
-void savePng(const std::string& output, const ImageRGBA8& image, size_t nonFinite) {
-  if (nonFinite > 0) fprintf(stderr, "warning: %zu non-finite colour values (written as black)\n", nonFinite);
-  std::vector<uint8_t> png = encodePng(image);
-  if (png.empty()) throw Error(ErrorKind::Internal, "cannot encode PNG for '" + output + "'");
-  if (!output.empty()) writeOutput(output, png);
-}
-
 namespace {
 
 // Parses the scene, loads its images and packs it: bad input fails before any Vulkan.
 GpuScene prepareScene(const RenderOptions& options, Scene* scene, HeadlessRender* out) {
   *scene = parseSceneFile(options.scene, ReadPolicy{options.allowRead});
   out->job = resolveJob(options, scene->render, 1);
-  checkOutput(options.output, *scene);
+  checkRenderOutputs(options, out->job, *scene);
   PackOptions pack;
   pack.mipmaps = out->job.filterBox;
   pack.maxImageMiB = options.maxImageMiB;
@@ -82,47 +77,51 @@ double renderBand(Renderer& renderer, uint32_t firstRow, bool perSample, uint32_
   return ms;
 }
 
-// Reads the selected band back into its rows of `image` (the whole image when it is one band),
-// as 8-bit sRGB.
-void keepBand(Renderer& renderer, const RenderJob& job, ImageRGBA8& image, size_t* nonFinite) {
+// The render's output files, opened when the first rows come back: --metadata full carries
+// the render time up to then (the whole render for an image of one band).
+struct RenderOutput {
+  const RenderOptions& options;
+  std::chrono::steady_clock::time_point start;  // the scene's parse
+  std::unique_ptr<ImageOutput> files;
+};
+
+// Reads the selected band back and writes its rows to the output files.
+void keepBand(Renderer& renderer, HeadlessRender* out, RenderOutput& output) {
   readbackFrame(renderer);
-  ImageRGBA8 band = encodeSrgb(framePixels(renderer), int(job.width), int(bandHeight(renderer)), nonFinite);
-  if (band.height == image.height) {
-    image = std::move(band);
-    return;
+  if (!output.files) {
+    const RenderFacts facts{out->deviceName, std::chrono::duration<double, std::milli>(
+                                                 std::chrono::steady_clock::now() - output.start).count()};
+    const Metadata metadata = renderMetadata(output.options, out->job, facts);
+    output.files = std::make_unique<ImageOutput>(renderOutputSpec(output.options, out->job, metadata));
   }
-  std::copy(band.pixels.begin(), band.pixels.end(),
-            image.pixels.begin() + ptrdiff_t(size_t(renderer.bandFirstRow) * job.width * 4));
+  output.files->writeBand(int(renderer.bandFirstRow), int(bandHeight(renderer)), framePixels(renderer), {});
 }
 
 // Renders the image, then `extraFrames` more frames of it (timed, into out->frameMs). An
-// image over the device's storage-buffer range is rendered in bands of rows, each read back as
-// soon as it is done (renderer.h, bandRows).
-ImageRGBA8 renderImage(Renderer& renderer, bool perSample, uint32_t extraFrames, HeadlessRender* out,
-                       std::chrono::steady_clock::time_point& t) {
+// image over the device's storage-buffer range is rendered in bands of rows, each read back and
+// written as soon as it is done (renderer.h, bandRows).
+void renderImage(Renderer& renderer, bool perSample, uint32_t extraFrames, HeadlessRender* out,
+                 RenderOutput& output, std::chrono::steady_clock::time_point& t) {
   const RenderJob& job = out->job;
   const uint32_t bands = bandCount(renderer);
-  ImageRGBA8 image{int(job.width), int(job.height), {}};
-  if (bands > 1) image.pixels.resize(size_t(job.width) * job.height * 4);
   for (uint32_t b = 0; b < bands; ++b) {
     renderBand(renderer, b * renderer.bandRows, perSample, job.samplesPerPixel);
-    if (bands > 1) keepBand(renderer, job, image, &out->nonFinite);
+    if (bands > 1) keepBand(renderer, out, output);
   }
-  out->times.firstDispatch = lapMs(t);  // several bands: their readbacks too
+  out->times.firstDispatch = lapMs(t);  // several bands: their readbacks and writes too
   for (uint32_t i = 0; i < extraFrames; ++i) {
     double ms = 0.0;
     for (uint32_t b = 0; b < bands; ++b) ms += renderBand(renderer, b * renderer.bandRows, perSample, job.samplesPerPixel);
     out->frameMs.push_back(ms);
   }
   t = std::chrono::steady_clock::now();  // the extra frames are not part of a render
-  if (bands == 1) keepBand(renderer, job, image, &out->nonFinite);
+  if (bands == 1) keepBand(renderer, out, output);
   out->times.readback = lapMs(t);
-  return image;
 }
 
-// Upload, pipelines and the image read back, on a renderer created by the caller.
-ImageRGBA8 renderPrepared(Renderer& renderer, const Scene& scene, const GpuScene& gpuScene, uint32_t extraFrames,
-                          HeadlessRender* out, bool steady, std::chrono::steady_clock::time_point& t) {
+// Upload, pipelines and the image read back into `output`, on a renderer created by the caller.
+void renderPrepared(Renderer& renderer, const Scene& scene, const GpuScene& gpuScene, uint32_t extraFrames,
+                    HeadlessRender* out, RenderOutput& output, bool steady, std::chrono::steady_clock::time_point& t) {
   const RenderJob& job = out->job;
   PhaseTimes& times = out->times;
   const int errorsBefore = renderer.device.validationErrors;
@@ -134,20 +133,26 @@ ImageRGBA8 renderPrepared(Renderer& renderer, const Scene& scene, const GpuScene
   preparePipelines(renderer, gpuScene, job, perSample,
                    steady ? INFINITY : double(job.samplesPerPixel) * (1 + extraFrames));
   times.pipeline = lapMs(t);
-  ImageRGBA8 image = renderImage(renderer, perSample, extraFrames, out, t);
+  renderImage(renderer, perSample, extraFrames, out, output, t);
   if (renderer.device.validationErrors > errorsBefore)
     throw VulkanError(std::to_string(renderer.device.validationErrors - errorsBefore) + " Vulkan validation error(s)");
-  return image;
+}
+
+// Makes the output files visible, with a warning for colour values written as black.
+void finishOutput(RenderOutput& output, HeadlessRender* out) {
+  output.files->finish();
+  out->nonFinite = output.files->nonFinite();
+  if (out->nonFinite > 0) fprintf(stderr, "warning: %zu non-finite colour values (written as black)\n", out->nonFinite);
 }
 
 // Everything on the device: creation, then renderPrepared.
-ImageRGBA8 renderOnDevice(Renderer& renderer, const RenderOptions& options, const Scene& scene,
-                          const GpuScene& gpuScene, uint32_t extraFrames, HeadlessRender* out, bool steady,
-                          std::chrono::steady_clock::time_point& t) {
+void renderOnDevice(Renderer& renderer, const RenderOptions& options, const Scene& scene, const GpuScene& gpuScene,
+                    uint32_t extraFrames, HeadlessRender* out, RenderOutput& output, bool steady,
+                    std::chrono::steady_clock::time_point& t) {
   createRenderer(renderer, {options.device, options.validate});
   out->deviceName = renderer.device.properties.deviceName;
   out->times.device = lapMs(t);
-  return renderPrepared(renderer, scene, gpuScene, extraFrames, out, steady, t);
+  renderPrepared(renderer, scene, gpuScene, extraFrames, out, output, steady, t);
 }
 
 // One scene of a batch on the batch's renderer: parsed, rendered and written.
@@ -157,31 +162,35 @@ void renderBatchItem(Renderer& renderer, const RenderOptions& options, const Bat
   one.scenes = {item.scene};
   one.output = item.output;
   HeadlessRender out;
+  out.deviceName = renderer.device.properties.deviceName;
   std::chrono::steady_clock::time_point t = std::chrono::steady_clock::now();
+  RenderOutput output{one, t, nullptr};
   Scene scene;
   const GpuScene gpuScene = prepareScene(one, &scene, &out);
-  ImageRGBA8 image = renderPrepared(renderer, scene, gpuScene, 0, &out, false, t);
-  savePng(one.output, image, out.nonFinite);
+  renderPrepared(renderer, scene, gpuScene, 0, &out, output, false, t);
+  finishOutput(output, &out);
 }
 
 }  // namespace
 
-void renderHeadless(const RenderOptions& options, uint32_t extraFrames, HeadlessRender* out, bool steady) {
+void renderHeadless(const RenderOptions& given, uint32_t extraFrames, HeadlessRender* out, bool steady) {
+  RenderOptions options = given;
+  if (options.output.empty()) options.output = "/dev/null";  // bench without -o: encoded, for its time
   std::chrono::steady_clock::time_point t = std::chrono::steady_clock::now();
+  RenderOutput output{options, t, nullptr};
   Scene scene;
   const GpuScene gpuScene = prepareScene(options, &scene, out);
   out->times.parse = lapMs(t);
   Renderer renderer;
-  ImageRGBA8 image;
   try {
-    image = renderOnDevice(renderer, options, scene, gpuScene, extraFrames, out, steady, t);
+    renderOnDevice(renderer, options, scene, gpuScene, extraFrames, out, output, steady, t);
   } catch (...) {
     destroyRenderer(renderer);
     throw;
   }
   destroyRenderer(renderer);
   t = std::chrono::steady_clock::now();  // device teardown is not a phase
-  savePng(options.output, image, out->nonFinite);
+  finishOutput(output, out);
   out->times.encode = lapMs(t);
 }
 

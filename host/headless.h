@@ -35,12 +35,9 @@ struct HeadlessRender {
   uint64_t imageBytes = 0;  // GPU memory of the image textures: the sum of their chains
 };
 
-// Encodes `image` as PNG and writes it to `output` (writeOutput), or only encodes it when
-// `output` is empty (bench); warns of non-finite values written as black. Throws IoError.
-void savePng(const std::string& output, const ImageRGBA8& image, size_t nonFinite);
-
 // Renders options.scene on Vulkan, then `extraFrames` more frames of the same image (timed),
-// and saves the PNG (savePng: options.output, if any). Throws an Error (error.h) on failure,
+// and writes its output files (render_output.h; bench without -o: a PNG encoded and dropped, for
+// the encode phase). Throws an Error (error.h) on failure,
 // with nothing written. `steady`: tile kernels wherever they save time per frame, not only
 // where they pay for their pipelines in this render.
 void renderHeadless(const RenderOptions& options, uint32_t extraFrames, HeadlessRender* out, bool steady = false);

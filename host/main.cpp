@@ -9,12 +9,14 @@
 #include "output_file.h"
 #include "parser.h"
 #include "reference_render.h"
+#include "render_output.h"
 #include "viewer.h"
 
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <new>
+#include <system_error>
 
 #include <unistd.h>
 
@@ -39,17 +41,21 @@ int exitCode(ErrorKind kind) {
 
 // The float64 CPU reference: no Vulkan at all.
 void runReference(const RenderOptions& options) {
-  Clock::time_point t = Clock::now();
+  Clock::time_point start = Clock::now(), t = start;
   Scene scene = parseSceneFile(options.scene, ReadPolicy{options.allowRead});
   const RenderJob job = resolveJob(options, scene.render, 1);
-  checkOutput(options.output, scene);
+  checkRenderOutputs(options, job, scene);
   const double parseMs = lapMs(t);
   ReferenceImage reference = renderReference(scene, int(job.width), int(job.height), int(job.samplesPerSide), 0,
                                              options.maxImageMiB);
   const double renderMs = lapMs(t);
   std::vector<float> rgba = referenceToRgba(reference);
-  size_t nonFinite = 0;
-  savePng(options.output, encodeSrgb(rgba.data(), int(job.width), int(job.height), &nonFinite), nonFinite);
+  const RenderFacts facts{"float64 CPU reference", std::chrono::duration<double, std::milli>(Clock::now() - start).count()};
+  ImageOutput output(renderOutputSpec(options, job, renderMetadata(options, job, facts)));
+  output.writeBand(0, int(job.height), rgba.data(), {});
+  output.finish();
+  if (output.nonFinite() > 0)
+    fprintf(stderr, "warning: %zu non-finite colour values (written as black)\n", output.nonFinite());
   const double encodeMs = lapMs(t);
   if (options.stats)
     printf("parse %.1f ms | reference %.1f ms | encode %.1f ms | %ux%u, %u spp\n", parseMs, renderMs, encodeMs,
@@ -85,7 +91,7 @@ void runRender(const RenderOptions& options) {
 void runCommand(const CliArgs& cli) {
   switch (cli.command) {
     case CliCommand::Help: fputs(usageText().c_str(), stdout); return;
-    case CliCommand::Version: puts("raytex 0.1.0"); return;
+    case CliCommand::Version: puts(kRaytexVersion); return;
     case CliCommand::Devices: fputs(listDevices().c_str(), stdout); return;
     case CliCommand::Render: return runRender(cli.render);
     case CliCommand::View: return runViewer(cli.render);
@@ -115,6 +121,11 @@ int main(int argc, char** argv) {
     return fail(errorLine(e), e.kind);
   } catch (const std::bad_alloc&) {
     return fail("raytex: out of memory", ErrorKind::OutOfMemory);
+  } catch (const std::system_error& e) {
+    // A thread that cannot start for want of memory (EAGAIN), in raytex or in a Vulkan layer.
+    if (e.code() == std::errc::resource_unavailable_try_again || e.code() == std::errc::not_enough_memory)
+      return fail("raytex: out of memory: " + std::string(e.what()), ErrorKind::OutOfMemory);
+    return fail(std::string("raytex: internal error: ") + e.what(), ErrorKind::Internal);
   } catch (const std::exception& e) {
     return fail(std::string("raytex: internal error: ") + e.what(), ErrorKind::Internal);
   } catch (...) {
