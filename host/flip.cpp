@@ -49,27 +49,39 @@ FloatImage blankLike(const FloatImage& image, int channels) {
   return out;
 }
 
-// `plane` (w x h) filtered along x (step 1) or y (step w) with `k`, the edge pixels repeated.
-std::vector<double> filterPass(const std::vector<double>& plane, int w, int h, const Kernel1D& k, bool alongX) {
-  std::vector<double> out(plane.size());
-  for (int y = 0; y < h; ++y)
+// `plane` (w x h) filtered along x with `k` into `out`, each row padded with its edge pixels.
+void filterRows(const std::vector<double>& plane, int w, int h, const Kernel1D& k, std::vector<double>* out) {
+  std::vector<double> padded(size_t(w + 2 * k.radius));
+  for (int y = 0; y < h; ++y) {
+    const double* row = &plane[size_t(y) * size_t(w)];
+    for (int i = 0; i < int(padded.size()); ++i) padded[size_t(i)] = row[std::clamp(i - k.radius, 0, w - 1)];
+    double* dst = &(*out)[size_t(y) * size_t(w)];
     for (int x = 0; x < w; ++x) {
       double sum = 0.0;
-      for (int d = -k.radius; d <= k.radius; ++d) {
-        const int sx = alongX ? std::clamp(x + d, 0, w - 1) : x;
-        const int sy = alongX ? y : std::clamp(y + d, 0, h - 1);
-        sum += k.weights[size_t(d + k.radius)] * plane[size_t(sy) * size_t(w) + size_t(sx)];
-      }
-      out[size_t(y) * size_t(w) + size_t(x)] = sum;
+      for (size_t t = 0; t < k.weights.size(); ++t) sum += k.weights[t] * padded[size_t(x) + t];
+      dst[x] = sum;
     }
-  return out;
+  }
+}
+
+// `plane` (w x h) filtered along y with `k` and added to `out`, whole rows at a time, the edge
+// rows repeated.
+void addFilteredColumns(const std::vector<double>& plane, int w, int h, const Kernel1D& k, std::vector<double>* out) {
+  for (int y = 0; y < h; ++y) {
+    double* dst = &(*out)[size_t(y) * size_t(w)];
+    for (int d = -k.radius; d <= k.radius; ++d) {
+      const double weight = k.weights[size_t(d + k.radius)];
+      const double* src = &plane[size_t(std::clamp(y + d, 0, h - 1)) * size_t(w)];
+      for (int x = 0; x < w; ++x) dst[x] += weight * src[x];
+    }
+  }
 }
 
 std::vector<double> filterPlane(const std::vector<double>& plane, int w, int h, const SeparableKernel& kernel) {
-  std::vector<double> out(plane.size(), 0.0);
+  std::vector<double> out(plane.size(), 0.0), rows(plane.size());
   for (const KernelTerm& term : kernel) {
-    std::vector<double> part = filterPass(filterPass(plane, w, h, term.x, true), w, h, term.y, false);
-    for (size_t i = 0; i < out.size(); ++i) out[i] += part[i];
+    filterRows(plane, w, h, term.x, &rows);
+    addFilteredColumns(rows, w, h, term.y, &out);
   }
   return out;
 }

@@ -4,6 +4,7 @@
 #include "image_io.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -32,48 +33,52 @@ double pixelDifference(const FloatImage& a, const FloatImage& b, size_t i) {
   return d;
 }
 
-// The means over every kSsimWindow x kSsimWindow window wholly inside the w x h plane, row by
-// row: (w - window + 1) x (h - window + 1) values, a sum along x and then along y.
-std::vector<double> windowMeans(const std::vector<double>& plane, int w, int h) {
-  const int ow = w - kSsimWindow + 1, oh = h - kSsimWindow + 1;
-  std::vector<double> rows(size_t(ow) * size_t(h));
+// The five sums of SSIM (x, y, x^2, y^2, xy) of channel c over every run of kSsimWindow pixels
+// along x: for each row, (width - kSsimWindow + 1) sums of each.
+std::array<std::vector<double>, 5> rowWindowSums(const FloatImage& a, const FloatImage& b, int c) {
+  const int w = a.width, h = a.height, ow = w - kSsimWindow + 1;
+  std::array<std::vector<double>, 5> sums;
+  for (std::vector<double>& s : sums) s.assign(size_t(ow) * size_t(h), 0.0);
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < ow; ++x) {
-      double s = 0.0;
-      for (int k = 0; k < kSsimWindow; ++k) s += plane[size_t(y) * size_t(w) + size_t(x + k)];
-      rows[size_t(y) * size_t(ow) + size_t(x)] = s;
+      const size_t out = size_t(y) * size_t(ow) + size_t(x);
+      for (int k = 0; k < kSsimWindow; ++k) {
+        const double u = a.at(x + k, y, c), v = b.at(x + k, y, c);
+        sums[0][out] += u;
+        sums[1][out] += v;
+        sums[2][out] += u * u;
+        sums[3][out] += v * v;
+        sums[4][out] += u * v;
+      }
     }
-  std::vector<double> out(size_t(ow) * size_t(oh));
-  for (int y = 0; y < oh; ++y)
-    for (int x = 0; x < ow; ++x) {
-      double s = 0.0;
-      for (int k = 0; k < kSsimWindow; ++k) s += rows[size_t(y + k) * size_t(ow) + size_t(x)];
-      out[size_t(y) * size_t(ow) + size_t(x)] = s / (kSsimWindow * kSsimWindow);
-    }
-  return out;
+  return sums;
 }
 
-// The sum of the structural similarity over the windows of channel c.
-double channelSsimSum(const FloatImage& a, const FloatImage& b, int c) {
-  const size_t n = pixelCount(a);
-  std::vector<double> x(n), y(n), xx(n), yy(n), xy(n);
-  for (size_t i = 0; i < n; ++i) {
-    x[i] = a.pixels[i * size_t(a.channels) + size_t(c)];
-    y[i] = b.pixels[i * size_t(b.channels) + size_t(c)];
-    xx[i] = x[i] * x[i];
-    yy[i] = y[i] * y[i];
-    xy[i] = x[i] * y[i];
-  }
-  const int w = a.width, h = a.height;
-  const std::vector<double> ux = windowMeans(x, w, h), uy = windowMeans(y, w, h);
-  const std::vector<double> uxx = windowMeans(xx, w, h), uyy = windowMeans(yy, w, h), uxy = windowMeans(xy, w, h);
+// The structural similarity of one window from its means of x, y, x^2, y^2 and xy, with
+// sample (N - 1) variances and covariance.
+double windowSsim(double ux, double uy, double uxx, double uyy, double uxy) {
   const double np = kSsimWindow * kSsimWindow, covNorm = np / (np - 1.0);
   const double c1 = 0.01 * 0.01, c2 = 0.03 * 0.03;
+  const double vx = covNorm * (uxx - ux * ux), vy = covNorm * (uyy - uy * uy), vxy = covNorm * (uxy - ux * uy);
+  return (2.0 * ux * uy + c1) * (2.0 * vxy + c2) / ((ux * ux + uy * uy + c1) * (vx + vy + c2));
+}
+
+// The sum of the structural similarity over the windows of channel c: the row sums added
+// along y, one row of windows at a time.
+double channelSsimSum(const FloatImage& a, const FloatImage& b, int c) {
+  const std::array<std::vector<double>, 5> rows = rowWindowSums(a, b, c);
+  const size_t ow = size_t(a.width - kSsimWindow + 1), oh = size_t(a.height - kSsimWindow + 1);
+  const double np = kSsimWindow * kSsimWindow;
+  std::array<std::vector<double>, 5> means;
   double sum = 0.0;
-  for (size_t i = 0; i < ux.size(); ++i) {
-    const double vx = covNorm * (uxx[i] - ux[i] * ux[i]), vy = covNorm * (uyy[i] - uy[i] * uy[i]);
-    const double vxy = covNorm * (uxy[i] - ux[i] * uy[i]);
-    sum += (2.0 * ux[i] * uy[i] + c1) * (2.0 * vxy + c2) / ((ux[i] * ux[i] + uy[i] * uy[i] + c1) * (vx + vy + c2));
+  for (size_t y = 0; y < oh; ++y) {
+    for (size_t q = 0; q < 5; ++q) {
+      means[q].assign(ow, 0.0);
+      for (size_t k = 0; k < size_t(kSsimWindow); ++k)
+        for (size_t x = 0; x < ow; ++x) means[q][x] += rows[q][(y + k) * ow + x];
+      for (double& m : means[q]) m /= np;
+    }
+    for (size_t x = 0; x < ow; ++x) sum += windowSsim(means[0][x], means[1][x], means[2][x], means[3][x], means[4][x]);
   }
   return sum;
 }
