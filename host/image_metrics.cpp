@@ -89,16 +89,20 @@ void clampToUnit(FloatImage& image) {
 
 }  // namespace
 
-double rootMeanSquareError(const FloatImage& a, const FloatImage& b) {
+double rootMeanSquareError(const FloatImage& a, const FloatImage& b, const std::vector<bool>* mask) {
   requireComparable(a, b);
   double sum = 0.0;
-  for (size_t i = 0; i < pixelCount(a); ++i)
+  size_t pixels = 0;
+  for (size_t i = 0; i < pixelCount(a); ++i) {
+    if (mask && !(*mask)[i]) continue;
+    ++pixels;
     for (int c = 0; c < colorChannels(a); ++c) {
       const size_t k = i * size_t(a.channels) + size_t(c);
       const double d = double(a.pixels[k]) - double(b.pixels[k]);
       sum += d * d;
     }
-  const size_t count = pixelCount(a) * size_t(colorChannels(a));
+  }
+  const size_t count = pixels * size_t(colorChannels(a));
   return count ? std::sqrt(sum / double(count)) : 0.0;
 }
 
@@ -129,6 +133,15 @@ double shareOverThreshold(const FloatImage& a, const FloatImage& b, double thres
   for (size_t i = 0; i < pixelCount(a); ++i)
     if (pixelDifference(a, b, i) > threshold) ++over;
   return pixelCount(a) ? double(over) / double(pixelCount(a)) : 0.0;
+}
+
+FloatImage rgbaFloatImage(const float* rgba, int width, int height) {
+  FloatImage image;
+  image.width = width;
+  image.height = height;
+  image.channels = 4;
+  image.pixels.assign(rgba, rgba + size_t(width) * size_t(height) * 4);
+  return image;
 }
 
 FloatImage linearToSrgbImage(const FloatImage& linear) {

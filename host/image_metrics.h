@@ -6,11 +6,14 @@
 #include "float_image.h"
 #include "image_read.h"
 
+#include <vector>
+
 // Side of the square window of the structural similarity.
 constexpr int kSsimWindow = 7;
 
-// Square root of the mean squared channel difference.
-double rootMeanSquareError(const FloatImage& a, const FloatImage& b);
+// Square root of the mean squared channel difference, over every pixel or over the pixels
+// flagged in `mask` (0 if none are).
+double rootMeanSquareError(const FloatImage& a, const FloatImage& b, const std::vector<bool>* mask = nullptr);
 // 10 log10(1 / rmse^2) in dB, the peak value being 1; +infinity for rmse 0.
 double peakSignalToNoise(double rmse);
 // The mean structural similarity (Wang et al. 2004) of two images holding sRGB-encoded values
@@ -23,6 +26,9 @@ double structuralSimilarity(const FloatImage& aSrgb, const FloatImage& bSrgb);
 double maxChannelDifference(const FloatImage& a, const FloatImage& b);
 // The share, 0 to 1, of pixels whose largest channel difference is over `threshold`.
 double shareOverThreshold(const FloatImage& a, const FloatImage& b, double threshold);
+
+// Linear RGBA floats (a rendered frame, row 0 at the top) as a 4-channel FloatImage.
+FloatImage rgbaFloatImage(const float* rgba, int width, int height);
 
 // Linear values clamped to [0, 1] and sRGB-encoded, in [0, 1] (non-finite values become 0).
 FloatImage linearToSrgbImage(const FloatImage& linear);

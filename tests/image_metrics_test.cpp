@@ -83,6 +83,21 @@ TEST(ImageMetrics, RmseAndPsnrOfAWorkedExample) {
   EXPECT_TRUE(std::isinf(peakSignalToNoise(0.0)));
 }
 
+TEST(ImageMetrics, RmseOverTheMaskedPixelsOfRgbaFrames) {
+  // Two 3x1 RGBA frames: alpha is not a colour channel; pixel 1 differs by 0.3 in red and
+  // pixel 2 by 0.6 in blue. Over pixels 1 and 2: sqrt((0.09 + 0.36) / 6) = 0.2738613.
+  const float a[12] = {0, 0, 0, 1, 0.5f, 0.5f, 0.5f, 1, 0.1f, 0.2f, 0.3f, 1};
+  const float b[12] = {0, 0, 0, 0, 0.8f, 0.5f, 0.5f, 1, 0.1f, 0.2f, 0.9f, 0};
+  const FloatImage fa = rgbaFloatImage(a, 3, 1), fb = rgbaFloatImage(b, 3, 1);
+  EXPECT_EQ(fa.channels, 4);
+  EXPECT_EQ(fa.at(2, 0, 2), 0.3f);
+  const std::vector<bool> last2 = {false, true, true}, first = {true, false, false}, none(3, false);
+  EXPECT_NEAR(rootMeanSquareError(fa, fb, &last2), 0.2738613, 1e-6);
+  EXPECT_NEAR(rootMeanSquareError(fa, fb), std::sqrt(0.45 / 9), 1e-7);
+  EXPECT_EQ(rootMeanSquareError(fa, fb, &first), 0.0);
+  EXPECT_EQ(rootMeanSquareError(fa, fb, &none), 0.0);
+}
+
 TEST(ImageMetrics, SsimEqualsAPlainComputation) {
   const FloatImage a = randomImage(20, 15, 1);
   FloatImage b = a;
