@@ -191,9 +191,10 @@ const struct {
      "phase, the GPU time per frame (timestamps, one extra frame per run), Mpixel/s and Mray/s (primary + "
      "shadow rays)."},
     {CliCommand::Diff, "diff", kDiff, "A B",
-     "Compare image B with image A (PNG or JPEG, of one size): RMSE and PSNR of the linear values, SSIM of the "
-     "sRGB values, the mean FLIP error, the largest channel difference and the share of pixels over --threshold, "
-     "as a table or JSON. Exit 0 when within every --fail-* limit given, 1 when over one, 2 on any failure."},
+     "Compare image B with image A (PNG, JPEG, EXR or PFM, of one size): RMSE and PSNR of the linear values, SSIM "
+     "of the sRGB values, the mean FLIP error, the largest channel difference and the share of pixels over "
+     "--threshold, as a table or JSON. Exit 0 when within every --fail-* limit given, 1 when over one, 2 on any "
+     "failure."},
 };
 
 const char* const kViewKeys =

@@ -55,11 +55,21 @@ bool sameFile(const struct stat& a, const std::string& path) {
   return stat(path.c_str(), &b) == 0 && a.st_dev == b.st_dev && a.st_ino == b.st_ino;
 }
 
+// Refuses an image holding NaN or infinity: no measure of a difference is defined there.
+void requireFinite(const std::string& path, const FloatImage& image) {
+  const size_t bad = nonFiniteCount(image);
+  if (bad > 0)
+    throw ImageInputError("image '" + path + "' holds " + std::to_string(bad) +
+                          " values that are not finite: raytex diff compares finite values");
+}
+
 }  // namespace
 
 DiffReport compareImageFiles(const DiffOptions& options) {
   LinearImage reference = readLinearImage(options.reference, kDiffMaxImageBytes);
   LinearImage test = readLinearImage(options.test, kDiffMaxImageBytes);
+  requireFinite(options.reference, reference.image);
+  requireFinite(options.test, test.image);
   if (reference.image.width != test.image.width || reference.image.height != test.image.height)
     throw ImageInputError("'" + options.reference + "' is " + sizeText(reference.image) + " but '" + options.test +
                           "' is " + sizeText(test.image) + ": raytex diff compares images of one size");

@@ -24,8 +24,8 @@ struct DiffReport {
   FloatImage flipError;  // per pixel, 1 channel
 };
 
-// Reads both files (readLinearImage), refuses images of different sizes (ImageInputError
-// naming both sizes), clamps both to [0, 1] when either is of low dynamic range, and measures.
+// Reads both files (readLinearImage), refuses an image holding NaN or infinity and images of
+// different sizes (ImageInputError naming both sizes), clamps both to [0, 1] when either is of low dynamic range, and measures.
 DiffReport compareImageFiles(const DiffOptions& options);
 
 // The report as lines of "name  value", and as one JSON object (keys in docs/cli.md).

@@ -135,6 +135,14 @@ double shareOverThreshold(const FloatImage& a, const FloatImage& b, double thres
   return pixelCount(a) ? double(over) / double(pixelCount(a)) : 0.0;
 }
 
+size_t nonFiniteCount(const FloatImage& image) {
+  size_t count = 0;
+  for (size_t i = 0; i < pixelCount(image); ++i)
+    for (int c = 0; c < colorChannels(image); ++c)
+      count += !std::isfinite(image.pixels[i * size_t(image.channels) + size_t(c)]);
+  return count;
+}
+
 FloatImage rgbaFloatImage(const float* rgba, int width, int height) {
   FloatImage image;
   image.width = width;

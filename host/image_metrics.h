@@ -27,6 +27,9 @@ double maxChannelDifference(const FloatImage& a, const FloatImage& b);
 // The share, 0 to 1, of pixels whose largest channel difference is over `threshold`.
 double shareOverThreshold(const FloatImage& a, const FloatImage& b, double threshold);
 
+// How many values of the colour channels are NaN or infinite.
+size_t nonFiniteCount(const FloatImage& image);
+
 // Linear RGBA floats (a rendered frame, row 0 at the top) as a 4-channel FloatImage.
 FloatImage rgbaFloatImage(const float* rgba, int width, int height);
 

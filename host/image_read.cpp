@@ -1,6 +1,7 @@
 #include "image_read.h"
 
 #include "error.h"
+#include "float_input.h"
 #include "image_io.h"
 #include "image_load.h"
 
@@ -51,10 +52,9 @@ LinearImage readEightBit(const std::string& path, uint64_t maxBytes) {
 
 LinearImage readLinearImage(const std::string& path, uint64_t maxBytes) {
   const std::string ext = lowerExtension(path);
-  // EXR and PFM: readExr (exr_file.h) and readPfm (pfm_file.h) go here, each returning a
-  // FloatImage as stored (lowDynamicRange = false).
-  if (ext == "exr" || ext == "pfm")
-    throw ImageInputError("cannot read image '" + path + "': unsupported image format");
+  // EXR and PFM hold linear values as stored, of high dynamic range.
+  if (ext == "exr") return LinearImage{readExr(path, maxBytes), false};
+  if (ext == "pfm") return LinearImage{readPfm(path, maxBytes), false};
   // Every other name goes to the PNG and JPEG reader, which names what it refuses.
   return readEightBit(path, maxBytes);
 }

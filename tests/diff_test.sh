@@ -34,8 +34,27 @@ expect corrupt-png 2 "^raytex: cannot decode image '$tmp/corrupt.png'" -- "$rayt
 expect size-mismatch 2 "^raytex: '$a' is 160x120 but '$small' is 64x48: raytex diff compares images of one size$" -- \
   "$raytex" diff "$a" "$small"
 printf 'v/1\001' >"$tmp/x.exr"
-expect exr-unsupported 2 "^raytex: cannot read image '$tmp/x.exr': unsupported image format$" -- \
-  "$raytex" diff "$tmp/x.exr" "$a"
+expect corrupt-exr 2 "^raytex: .*$tmp/x.exr" -- "$raytex" diff "$tmp/x.exr" "$a"
+
+# Float images (PFM, linear as stored): compared unclamped when both are of high dynamic range,
+# both clamped to [0, 1] when either is an 8-bit file, refused when they hold NaN or infinity.
+pfm() {  # pfm FILE WIDTH HEIGHT VALUE...: a little-endian RGB PFM
+  python3 -c 'import struct, sys
+w, h = int(sys.argv[2]), int(sys.argv[3])
+v = [float(x) for x in sys.argv[4:]]
+open(sys.argv[1], "wb").write(b"PF\n%d %d\n-1.0\n" % (w, h) + struct.pack("<%df" % len(v), *v))' "$@"
+}
+pfm "$tmp/two.pfm" 1 1 2 2 2
+pfm "$tmp/four.pfm" 1 1 4 4 4
+pfm "$tmp/nan.pfm" 1 1 1 nan 1
+python3 -c 'import struct, zlib, sys
+c = lambda t, d: struct.pack(">I", len(d)) + t + d + struct.pack(">I", zlib.crc32(t + d))
+open(sys.argv[1], "wb").write(b"\x89PNG\r\n\x1a\n" + c(b"IHDR", struct.pack(">IIBBBBB", 1, 1, 8, 2, 0, 0, 0))
+  + c(b"IDAT", zlib.compress(b"\0\xff\xff\xff")) + c(b"IEND", b""))' "$tmp/white.png"
+expect hdr-unclamped 0 '"rmse": 2,' -- "$raytex" diff "$tmp/two.pfm" "$tmp/four.pfm" --json
+expect ldr-clamps-both 0 '"rmse": 0,' -- "$raytex" diff "$tmp/white.png" "$tmp/four.pfm" --json
+expect non-finite 2 "^raytex: image '$tmp/nan.pfm' holds 1 values that are not finite" -- \
+  "$raytex" diff "$tmp/nan.pfm" "$tmp/two.pfm"
 expect bad-option 2 '^raytex: --width is an option of raytex render, view and bench, not of diff$' -- \
   "$raytex" diff "$a" "$b" --width 5
 expect bad-number 2 "^raytex: --fail-flip expects a number from 0 to 1, got 'x'$" -- "$raytex" diff "$a" "$b" --fail-flip x
