@@ -118,7 +118,7 @@ TEST(ImageMetrics, SsimOfIdenticalImagesIsOne) {
 }
 
 // scikit-image 0.19.3's structural_similarity(a, b, channel_axis=2, data_range=1.0) on the PNGs
-// read as values / 255 (matplotlib), as bench/accuracy_chart.py called it, printed to 10 decimals.
+// read as values / 255 (matplotlib), printed to 10 decimals.
 TEST(ImageMetrics, SsimMatchesScikitImage) {
   const struct {
     const char* name;
