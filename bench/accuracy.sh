@@ -3,14 +3,16 @@
 # bricks scene with every method and sample count, times them on the GPU and measures their
 # error against the float64 reference, then draws docs/accuracy.png and writes docs/accuracy.csv.
 # Usage: bench/accuracy.sh [BUILD_DIR]   (default build; env: WIDTH, HEIGHT, RUNS, default
-#        160 120 5; needs python3-matplotlib, python3-skimage, python3-numpy from Debian)
+#        160 120 5; needs python3-matplotlib from Debian; SSIM comes from raytex diff)
 #   writes BUILD_DIR/accuracy/ (the CSV and images), docs/accuracy.png and docs/accuracy.csv.
 set -euo pipefail
 [ $# -le 1 ] || { echo "usage: bench/accuracy.sh [BUILD_DIR]   (env: WIDTH, HEIGHT, RUNS)" >&2; exit 2; }
 build=$(cd "${1:-build}" && pwd)
 cd "$(dirname "$0")/.."
 width=${WIDTH:-160} height=${HEIGHT:-120} runs=${RUNS:-5}
-[ -x "$build/raytex_bench_accuracy" ] || { echo "accuracy.sh: no $build/raytex_bench_accuracy (build it first)" >&2; exit 1; }
+for program in raytex_bench_accuracy raytex; do
+  [ -x "$build/$program" ] || { echo "accuracy.sh: no $build/$program (build it first)" >&2; exit 1; }
+done
 out=$build/accuracy
 mkdir -p "$out"
 scenes=()
@@ -25,4 +27,4 @@ for material in aSolidChecker aMarble anImage; do
 done
 scenes+=("horizon=scenes/horizon.cfg" "bricks=scenes/bricks.cfg")
 "$build/raytex_bench_accuracy" "$out" "$width" "$height" "$runs" "${scenes[@]}"
-/usr/bin/python3 bench/accuracy_chart.py "$out/accuracy.csv" docs/accuracy.png docs/accuracy.csv
+/usr/bin/python3 bench/accuracy_chart.py "$out/accuracy.csv" docs/accuracy.png docs/accuracy.csv "$build/raytex"

@@ -1,37 +1,41 @@
 #!/usr/bin/python3
 """Draws the speed-accuracy chart from raytex_bench_accuracy's CSV.
 
-Adds SSIM (scikit-image's structural_similarity on the sRGB images, against the float64
-reference) to each row and plots error against GPU time, log-log: one panel per scene, one
-line per method, one point per sample count.
-Usage: bench/accuracy_chart.py IN.csv OUT.png OUT.csv
+Adds SSIM (of the sRGB images, against the float64 reference, as `raytex diff --json` reports
+it: 7x7 uniform windows, sample covariances, the mean over channels) to each row and plots error
+against GPU time, log-log: one panel per scene, one line per method, one point per sample count.
+Usage: bench/accuracy_chart.py IN.csv OUT.png OUT.csv RAYTEX
 """
 import csv
+import json
 import os
 import platform
+import subprocess
 import sys
 
 import matplotlib
 
 matplotlib.use("Agg")
-import matplotlib.image as mpimg  # noqa: E402
 import matplotlib.pyplot as plt  # noqa: E402
-from skimage.metrics import structural_similarity  # noqa: E402
 
 
-def load(path):
-    return mpimg.imread(path)[:, :, :3].astype("float64")  # PNG -> [0, 1]
+def ssim(raytex, reference, image):
+    """The SSIM raytex diff reports for the pair."""
+    report = subprocess.run([raytex, "diff", reference, image, "--json"], check=True, capture_output=True, text=True)
+    return json.loads(report.stdout)["ssim"]
 
 
 def main():
-    source, chart, table = sys.argv[1:4]
+    if len(sys.argv) != 5:
+        sys.exit("usage: bench/accuracy_chart.py IN.csv OUT.png OUT.csv RAYTEX")
+    source, chart, table, raytex = sys.argv[1:5]
     folder = os.path.dirname(source)
     with open(source) as f:
         rows = list(csv.DictReader(f))
     for row in rows:
-        image = load(os.path.join(folder, row["image"]))
-        reference = load(os.path.join(folder, row["reference"]))
-        row["ssim"] = "%.5f" % structural_similarity(reference, image, channel_axis=2, data_range=1.0)
+        image = os.path.join(folder, row["image"])
+        reference = os.path.join(folder, row["reference"])
+        row["ssim"] = "%.5f" % ssim(raytex, reference, image)
     with open(table, "w", newline="") as f:
         writer = csv.DictWriter(f, fieldnames=["scene", "method", "spp", "gpu_ms", "rmse", "ssim"],
                                 extrasaction="ignore")

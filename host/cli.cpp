@@ -6,12 +6,14 @@
 #include <cerrno>
 #include <cmath>
 #include <cctype>
+#include <cstdio>
 #include <cstdlib>
 
 namespace {
 
 // The commands an option applies to, as bits.
-enum : unsigned { kRender = 1, kView = 2, kBench = 4, kAll = kRender | kView | kBench };
+// kAll: the commands that render a scene.
+enum : unsigned { kRender = 1, kView = 2, kBench = 4, kDiff = 8, kAll = kRender | kView | kBench };
 
 uint32_t parseUint(const std::string& flag, const std::string& text, uint32_t lo, uint32_t hi) {
   char* end = nullptr;
@@ -45,6 +47,18 @@ uint32_t parseDepth(const std::string& flag, const std::string& text) {
 bool parseMetadata(const std::string& flag, const std::string& text) {
   if (text != "basic" && text != "full") throw UsageError(flag + " expects basic or full, got '" + text + "'");
   return text == "full";
+}
+
+double parseNumber(const std::string& flag, const std::string& text, double lo, double hi) {
+  char* end = nullptr;
+  errno = 0;
+  const double v = strtod(text.c_str(), &end);
+  if (text.empty() || *end != '\0' || errno == ERANGE || !std::isfinite(v) || v < lo || v > hi) {
+    char range[64];
+    snprintf(range, sizeof range, "from %g to %g", lo, hi);
+    throw UsageError(flag + " expects a number " + range + ", got '" + text + "'");
+  }
+  return v;
 }
 
 bool parseFilter(const std::string& flag, const std::string& text) {
@@ -112,8 +126,9 @@ const CliOption kOptions[] = {
      [](CliArgs& c, const std::string& f, const std::string& v) { c.render.frames = parseUint(f, v, 1, 1000000); }},
     {"--runs", nullptr, "N", kBench, "renders to take medians over, 1 to 1000 (default 5)",
      [](CliArgs& c, const std::string& f, const std::string& v) { c.bench.runs = parseUint(f, v, 1, 1000); }},
-    {"--json", nullptr, nullptr, kBench, "print one JSON object (keys in docs/performance.md) instead of the table",
-     [](CliArgs& c, const std::string&, const std::string&) { c.bench.json = true; }},
+    {"--json", nullptr, nullptr, kBench | kDiff,
+     "print one JSON object instead of the table (keys: bench in docs/performance.md, diff in docs/cli.md)",
+     [](CliArgs& c, const std::string&, const std::string&) { c.bench.json = c.diff.json = true; }},
     {"--stats", nullptr, nullptr, kRender | kView,
      "render: print one line of phase times in milliseconds; view: frame and material-switch times at exit",
      [](CliArgs& c, const std::string&, const std::string&) { c.render.stats = true; }},
@@ -128,6 +143,20 @@ const CliOption kOptions[] = {
      [](CliArgs& c, const std::string& f, const std::string& v) {
        c.render.allowRead.push_back(nonEmpty(f, v, "a directory"));
      }},
+    {"--threshold", nullptr, "T", kDiff,
+     "the linear channel difference a pixel must exceed to count as differing (default 0.01: above the widest "
+     "step between 8-bit sRGB codes, so rounding never counts)",
+     [](CliArgs& c, const std::string& f, const std::string& v) { c.diff.threshold = parseNumber(f, v, 0.0, 1e30); }},
+    {"--heatmap", nullptr, "FILE", kDiff,
+     "write the FLIP error per pixel as a PNG heat map (dark purple: none, pale yellow: the most), atomically; the "
+     "images compared are refused",
+     [](CliArgs& c, const std::string& f, const std::string& v) { c.diff.heatmap = nonEmpty(f, v, "a file name"); }},
+    {"--fail-rmse", nullptr, "X", kDiff, "exit 1 when the RMSE (linear) exceeds X",
+     [](CliArgs& c, const std::string& f, const std::string& v) { c.diff.failRmse = parseNumber(f, v, 0.0, 1e30); }},
+    {"--fail-flip", nullptr, "X", kDiff, "exit 1 when the mean FLIP error exceeds X (0 to 1)",
+     [](CliArgs& c, const std::string& f, const std::string& v) { c.diff.failFlip = parseNumber(f, v, 0.0, 1.0); }},
+    {"--fail-percent", nullptr, "P", kDiff, "exit 1 when more than P percent of the pixels differ by more than --threshold",
+     [](CliArgs& c, const std::string& f, const std::string& v) { c.diff.failPercent = parseNumber(f, v, 0.0, 100.0); }},
 };
 
 // Options without effect when another is given: refused rather than ignored.
@@ -146,20 +175,26 @@ const struct {
   CliCommand command;
   const char* name;
   unsigned bit;
+  const char* operands;  // the words after the command in its synopsis
   const char* summary;
 } kCommands[] = {
-    {CliCommand::Render, "render", kRender,
+    {CliCommand::Render, "render", kRender, "SCENE...",
      "Ray-trace SCENE (a .cfg file) on a Vulkan device and write a PNG. Several scenes render one after "
      "another on one device into -o DIR/; a scene that fails is reported and the others still render, and "
      "the exit code is that of the first that failed."},
-    {CliCommand::View, "view", kView,
+    {CliCommand::View, "view", kView, "SCENE",
      "Show SCENE in a window, rendered by the same kernel one sample per frame and accumulated while nothing "
      "changes, up to --spp samples. Saving the scene file reloads it; the title shows the materials, samples "
      "and ms/frame."},
-    {CliCommand::Bench, "bench", kBench,
+    {CliCommand::Bench, "bench", kBench, "SCENE",
      "Render SCENE --runs times, each a whole render from parse to PNG, and print the median time of each "
      "phase, the GPU time per frame (timestamps, one extra frame per run), Mpixel/s and Mray/s (primary + "
      "shadow rays)."},
+    {CliCommand::Diff, "diff", kDiff, "A B",
+     "Compare image B with image A (PNG, JPEG, EXR or PFM, of one size): RMSE and PSNR of the linear values, SSIM "
+     "of the sRGB values, the mean FLIP error, the largest channel difference and the share of pixels over "
+     "--threshold, as a table or JSON. Exit 0 when within every --fail-* limit given, 1 when over one, 2 on any "
+     "failure."},
 };
 
 const char* const kViewKeys =
@@ -179,7 +214,8 @@ const char* const kExitCodes =
     "  0  success\n"
     "  1  a device or Vulkan failure (an image the device cannot hold included), out of memory,\n"
     "     an output file or standard output not written, an internal error\n"
-    "  2  bad input: usage, a scene, an image file refused, an output raytex may not write\n";
+    "  2  bad input: usage, a scene, an image file refused, an output raytex may not write\n"
+    "  raytex diff, as cmp: 0 the images pass, 1 a --fail-* limit exceeded, 2 any failure\n";
 
 const CliOption* findOption(const std::string& name) {
   for (const CliOption& o : kOptions)
@@ -304,6 +340,29 @@ void checkOutputOptions(const CliArgs& cli, const std::vector<std::string>& give
   if (cli.render.reference) throw UsageError("--aov comes from the Vulkan kernel; --reference writes the image only");
 }
 
+// A word that is not an option: a scene (render takes several), or diff's images A and B.
+void takeOperand(const std::string& word, CliArgs* cli) {
+  if (cli->command == CliCommand::Diff) {
+    DiffOptions& d = cli->diff;
+    if (!d.test.empty()) throw UsageError("diff compares two images, got a third ('" + word + "')");
+    (d.reference.empty() ? d.reference : d.test) = word;
+  } else if (cli->render.scene.empty() || cli->command == CliCommand::Render) {
+    if (cli->render.scene.empty()) cli->render.scene = word;
+    cli->render.scenes.push_back(word);
+  } else {
+    throw UsageError("more than one scene given ('" + cli->render.scene + "', '" + word +
+                     "'); only render takes several");
+  }
+}
+
+void requireOperands(const std::string& command, const CliArgs& cli) {
+  if (cli.command == CliCommand::Diff) {
+    if (cli.diff.test.empty()) throw UsageError("diff needs two images (e.g. raytex diff a.png b.png)");
+  } else if (cli.render.scene.empty()) {
+    throw UsageError(command + " needs a scene file (e.g. raytex " + command + " scenes/textures.cfg)");
+  }
+}
+
 }  // namespace
 
 CliArgs parseCli(const std::vector<std::string>& args) {
@@ -317,15 +376,11 @@ CliArgs parseCli(const std::vector<std::string>& args) {
     if (a == "--help" || a == "-h") return CliArgs{};
     if (!a.empty() && a[0] == '-' && a != "-") {
       given.push_back(applyOption(args, &i, &cli).name);
-    } else if (cli.render.scene.empty() || cli.command == CliCommand::Render) {
-      if (cli.render.scene.empty()) cli.render.scene = a;
-      cli.render.scenes.push_back(a);
     } else {
-      throw UsageError("more than one scene given ('" + cli.render.scene + "', '" + a + "'); only render takes several");
+      takeOperand(a, &cli);
     }
   }
-  if (cli.render.scene.empty())
-    throw UsageError(args[0] + " needs a scene file (e.g. raytex " + args[0] + " scenes/textures.cfg)");
+  requireOperands(args[0], cli);
   refuseWithoutEffect(cli, given);
   checkBatch(cli, given);
   checkOutputOptions(cli, given);
@@ -380,8 +435,8 @@ std::string optionSignature(const CliOption& o) {
   return o.value ? s + " " + o.value : s;
 }
 
-std::string synopsis(const char* command, unsigned bit) {
-  std::string words = std::string("raytex ") + command + (bit == kRender ? " SCENE..." : " SCENE");
+std::string synopsis(const char* command, const char* operands, unsigned bit) {
+  std::string words = std::string("raytex ") + command + " " + operands;
   for (const CliOption& o : kOptions)
     if (o.commands & bit) {
       std::string shortest = o.alias ? o.alias : o.name;
@@ -395,7 +450,7 @@ std::string synopsis(const char* command, unsigned bit) {
 
 std::string usageText() {
   std::string out = "usage:\n";
-  for (const auto& c : kCommands) out += wrapped(synopsis(c.name, c.bit), 2, 100, 6);
+  for (const auto& c : kCommands) out += wrapped(synopsis(c.name, c.operands, c.bit), 2, 100, 6);
   out += "  raytex devices\n  raytex --help | --version\n\ncommands:\n";
   for (const auto& c : kCommands) out += "  " + std::string(c.name) + "\n" + wrapped(c.summary, 4, 100, 4);
   out += "  devices\n    List the Vulkan devices and their indices.\n\noptions (--name value or --name=value):\n";

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-enum class CliCommand { Help, Version, Render, View, Bench, Devices };
+enum class CliCommand { Help, Version, Render, View, Bench, Devices, Diff };
 
 struct RenderOptions {
   std::string scene;  // the first scene given
@@ -39,10 +39,24 @@ struct BenchOptions {
   bool json = false;  // --json: one JSON object instead of the table
 };
 
+// The largest linear channel difference that `raytex diff` does not count (--threshold): above
+// the widest step between neighbouring 8-bit sRGB codes (1 - srgbToLinear(254 / 255) =
+// 0.0089), so that rounding to 8 bits never counts as a difference.
+constexpr double kDefaultDiffThreshold = 0.01;
+
+struct DiffOptions {
+  std::string reference, test;  // the two image files, A and B
+  double threshold = kDefaultDiffThreshold;  // --threshold T
+  std::string heatmap;  // --heatmap FILE: the FLIP error map as a PNG; empty: none
+  std::optional<double> failRmse, failFlip, failPercent;  // --fail-rmse, --fail-flip, --fail-percent
+  bool json = false;  // --json: one JSON object instead of the table
+};
+
 struct CliArgs {
   CliCommand command = CliCommand::Help;
   RenderOptions render;  // render, view and bench (bench writes -o only when given)
   BenchOptions bench;
+  DiffOptions diff;
 };
 
 // Largest accepted width or height, and pixel count (the float image and its readback

@@ -2,6 +2,7 @@
 #include "cli.h"
 #include "benchmark.h"
 #include "device.h"
+#include "diff_report.h"
 #include "error.h"
 #include "standard_output.h"
 #include "headless.h"
@@ -38,6 +39,9 @@ int exitCode(ErrorKind kind) {
   }
   return 1;
 }
+
+// raytex diff answers as cmp does: 1 is a --fail-* limit exceeded, so every failure is 2.
+int failureCode(ErrorKind kind, bool diff) { return diff ? 2 : exitCode(kind); }
 
 // The float64 CPU reference: no Vulkan at all.
 void runReference(const RenderOptions& options) {
@@ -88,21 +92,24 @@ void runRender(const RenderOptions& options) {
            render.job.samplesPerPixel);
 }
 
-void runCommand(const CliArgs& cli) {
+// The command's exit code when it does not throw (diff: 1 when over a limit).
+int runCommand(const CliArgs& cli) {
   switch (cli.command) {
-    case CliCommand::Help: fputs(usageText().c_str(), stdout); return;
-    case CliCommand::Version: puts(kRaytexVersion); return;
-    case CliCommand::Devices: fputs(listDevices().c_str(), stdout); return;
-    case CliCommand::Render: return runRender(cli.render);
-    case CliCommand::View: return runViewer(cli.render);
-    case CliCommand::Bench: return runBench(cli.render, cli.bench);
+    case CliCommand::Help: fputs(usageText().c_str(), stdout); break;
+    case CliCommand::Version: puts(kRaytexVersion); break;
+    case CliCommand::Devices: fputs(listDevices().c_str(), stdout); break;
+    case CliCommand::Render: runRender(cli.render); break;
+    case CliCommand::View: runViewer(cli.render); break;
+    case CliCommand::Bench: runBench(cli.render, cli.bench); break;
+    case CliCommand::Diff: return runDiff(cli.diff);
   }
+  return 0;
 }
 
-// One line on stderr and the exit code of `kind`.
-int fail(const std::string& line, ErrorKind kind) {
+// One line on stderr and `code`.
+int fail(const std::string& line, int code) {
   fprintf(stderr, "%s\n", line.c_str());
-  return exitCode(kind);
+  return code;
 }
 
 }  // namespace
@@ -113,22 +120,23 @@ int main(int argc, char** argv) {
   // device list), so a failed write is seen there with its errno; a terminal stays line-buffered.
   static char stdoutBuffer[1 << 16];  // glibc ignores the size of a buffer it allocates itself
   if (!isatty(fileno(stdout))) setvbuf(stdout, stdoutBuffer, _IOFBF, sizeof stdoutBuffer);
+  const bool diff = argc > 1 && std::string(argv[1]) == "diff";
   try {
-    runCommand(parseCli(std::vector<std::string>(argv + 1, argv + argc)));
+    const int code = runCommand(parseCli(std::vector<std::string>(argv + 1, argv + argc)));
     finishStdout(stdout);
-    return 0;
+    return code;
   } catch (const Error& e) {
-    return fail(errorLine(e), e.kind);
+    return fail(errorLine(e), failureCode(e.kind, diff));
   } catch (const std::bad_alloc&) {
-    return fail("raytex: out of memory", ErrorKind::OutOfMemory);
+    return fail("raytex: out of memory", failureCode(ErrorKind::OutOfMemory, diff));
   } catch (const std::system_error& e) {
     // A thread that cannot start for want of memory (EAGAIN), in raytex or in a Vulkan layer.
     if (e.code() == std::errc::resource_unavailable_try_again || e.code() == std::errc::not_enough_memory)
-      return fail("raytex: out of memory: " + std::string(e.what()), ErrorKind::OutOfMemory);
-    return fail(std::string("raytex: internal error: ") + e.what(), ErrorKind::Internal);
+      return fail("raytex: out of memory: " + std::string(e.what()), failureCode(ErrorKind::OutOfMemory, diff));
+    return fail(std::string("raytex: internal error: ") + e.what(), failureCode(ErrorKind::Internal, diff));
   } catch (const std::exception& e) {
-    return fail(std::string("raytex: internal error: ") + e.what(), ErrorKind::Internal);
+    return fail(std::string("raytex: internal error: ") + e.what(), failureCode(ErrorKind::Internal, diff));
   } catch (...) {
-    return fail("raytex: internal error: an unknown exception", ErrorKind::Internal);
+    return fail("raytex: internal error: an unknown exception", failureCode(ErrorKind::Internal, diff));
   }
 }

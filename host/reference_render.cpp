@@ -1,6 +1,7 @@
 #include "reference_render.h"
 
 #include "common.h"
+#include "image_metrics.h"
 #include "reference.h"
 #include "texture.h"
 
@@ -134,17 +135,8 @@ ReferenceImage renderReference(const Scene& scene, int width, int height, int sa
 }
 
 double rmseAgainstReference(const float* rgba, const ReferenceImage& ref, const std::vector<bool>* mask) {
-  double sum = 0.0;
-  size_t count = 0;
-  for (size_t i = 0; i < size_t(ref.width) * ref.height; ++i) {
-    if (mask && !(*mask)[i]) continue;
-    ++count;
-    for (int c = 0; c < 3; ++c) {
-      double d = double(rgba[i * 4 + c]) - ref.rgb[i * 3 + c];
-      sum += d * d;
-    }
-  }
-  return count ? std::sqrt(sum / double(3 * count)) : 0.0;
+  return rootMeanSquareError(rgbaFloatImage(rgba, ref.width, ref.height),
+                             rgbaFloatImage(referenceToRgba(ref).data(), ref.width, ref.height), mask);
 }
 
 std::vector<float> referenceToRgba(const ReferenceImage& image) {

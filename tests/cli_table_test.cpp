@@ -129,3 +129,32 @@ TEST(CliTable, PassesAreNamedAndNeedFilesAndTheBoxFilterWhereTheyComeFromIt) {
   options.filter = true;
   EXPECT_NO_THROW(resolveJob(options, RenderSettings{}, 1));
 }
+
+TEST(CliTable, DiffTakesTwoImagesAndOnlyItsOwnOptions) {
+  const CliArgs cli = parseCli({"diff", "a.png", "--threshold=0.02", "b.png", "--heatmap", "h.png", "--fail-rmse",
+                                "0.1", "--fail-flip", "0.05", "--fail-percent", "2.5", "--json"});
+  EXPECT_EQ(cli.command, CliCommand::Diff);
+  EXPECT_EQ(cli.diff.reference, "a.png");
+  EXPECT_EQ(cli.diff.test, "b.png");
+  EXPECT_EQ(cli.diff.threshold, 0.02);
+  EXPECT_EQ(cli.diff.heatmap, "h.png");
+  EXPECT_EQ(cli.diff.failRmse.value_or(-1), 0.1);
+  EXPECT_EQ(cli.diff.failFlip.value_or(-1), 0.05);
+  EXPECT_EQ(cli.diff.failPercent.value_or(-1), 2.5);
+  EXPECT_TRUE(cli.diff.json);
+  EXPECT_EQ(parseCli({"diff", "a.png", "b.png"}).diff.threshold, kDefaultDiffThreshold);
+  EXPECT_FALSE(parseCli({"diff", "a.png", "b.png"}).diff.failRmse.has_value());
+  EXPECT_EQ(refusal({"diff", "a.png"}), "diff needs two images (e.g. raytex diff a.png b.png)");
+  EXPECT_EQ(refusal({"diff", "a.png", "b.png", "c.png"}), "diff compares two images, got a third ('c.png')");
+  EXPECT_EQ(refusal({"diff", "a.png", "b.png", "--width", "3"}),
+            "--width is an option of raytex render, view and bench, not of diff");
+  EXPECT_EQ(refusal({"diff", "a.png", "b.png", "-o", "x.png"}),
+            "-o is an option of raytex render, view and bench, not of diff");
+  EXPECT_EQ(refusal({"render", "s.cfg", "--threshold", "0.1"}), "--threshold is an option of raytex diff, not of render");
+  EXPECT_EQ(refusal({"bench", "s.cfg", "--fail-flip", "0.1"}), "--fail-flip is an option of raytex diff, not of bench");
+  EXPECT_EQ(refusal({"diff", "a.png", "b.png", "--fail-flip", "2"}), "--fail-flip expects a number from 0 to 1, got '2'");
+  EXPECT_EQ(refusal({"diff", "a.png", "b.png", "--threshold", "nan"}),
+            "--threshold expects a number from 0 to 1e+30, got 'nan'");
+  EXPECT_EQ(refusal({"diff", "a.png", "b.png", "--fail-percent", "-1"}),
+            "--fail-percent expects a number from 0 to 100, got '-1'");
+}

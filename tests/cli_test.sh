@@ -160,7 +160,7 @@ expect render-block-too-big 2 '9000x9000 exceeds the limit' -- "$raytex" render 
 # bench: usage errors, the table, JSON that parses with every phase, and no file unless -o.
 expect bench-runs 2 '--runs expects an integer from 1 to 1000' -- "$raytex" bench s.cfg --runs 0
 expect bench-no-scene 2 'bench needs a scene file' -- "$raytex" bench --json
-expect render-json 2 '^raytex: --json is an option of raytex bench, not of render$' -- "$raytex" render s.cfg --json
+expect render-json 2 '^raytex: --json is an option of raytex bench and diff, not of render$' -- "$raytex" render s.cfg --json
 expect bench-scene-error 2 "^$tmp/typo.cfg:3:3: " -- "$raytex" bench "$tmp/typo.cfg"
 expect bench-table 0 'frame \(GPU timestamps\) +[0-9.]+' -- "$raytex" bench "$src/scenes/textures.cfg" \
   --width 32 --height 24 --runs 2

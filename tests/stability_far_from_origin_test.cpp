@@ -1,5 +1,6 @@
 // Stability: float precision far from the origin. Scenes translated by up
 // to 2^20 and 1e6: hit/miss, texture coordinates and shadows as at the origin.
+#include "image_metrics.h"
 #include "reference.h"
 #include "reference_render.h"
 #include "texture.h"
@@ -156,10 +157,7 @@ TEST_F(StabilityTest, FarSceneRendersLikeTheOrigin) {
   for (double X : {1048576.0, 1179648.0}) {
     SCOPED_TRACE("X = " + fmtG(X));
     std::vector<float> far = render(build(X), w, h, OUTPUT_SHADED);
-    double sum = 0.0;
-    for (size_t i = 0; i < size_t(w) * h; ++i)
-      for (int c = 0; c < 3; ++c) sum += std::pow(double(far[i * 4 + c]) - double(base[i * 4 + c]), 2.0);
-    double rmse = std::sqrt(sum / (3.0 * w * h));
+    const double rmse = rootMeanSquareError(rgbaFloatImage(far.data(), w, h), rgbaFloatImage(base.data(), w, h));
     RecordProperty("rmse_vs_origin_X" + fmtG(X), fmtG(rmse));
     std::cout << "[far-vs-origin] X = " << fmtG(X) << ": RMSE " << fmtG(rmse) << " (1-spp noise floor "
               << fmtG(noiseFloor) << ")\n";

@@ -1,0 +1,44 @@
+// `raytex diff A B`: two image files compared (image_metrics.h, flip.h), reported as a table
+// or one JSON object, the --fail-* limits checked. No Vulkan.
+#pragma once
+
+#include "cli.h"
+#include "float_image.h"
+#include "image_metrics.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+// Largest linear float RGB image diff reads for each input (12 bytes a pixel): 256 MiB, 22.4
+// Mpixel. The comparison's peak memory is about 140 bytes a pixel (280 MiB at 1920x1080), so
+// two such images take about 3 GiB.
+constexpr uint64_t kDiffMaxImageBytes = uint64_t(256) << 20;
+
+struct DiffReport {
+  std::string reference, test;  // the paths compared
+  int width = 0, height = 0;
+  double threshold = kDefaultDiffThreshold;
+  ImageMetrics metrics;
+  double flip = 0.0;  // the mean FLIP error of the sRGB encodings (values clamped to [0, 1])
+  FloatImage flipError;  // per pixel, 1 channel
+};
+
+// Reads both files (readLinearImage), refuses an image holding NaN or infinity and images of
+// different sizes (ImageInputError naming both sizes), clamps both to [0, 1] when either is of low dynamic range, and measures.
+DiffReport compareImageFiles(const DiffOptions& options);
+
+// The report as lines of "name  value", and as one JSON object (keys in docs/cli.md).
+std::string diffTable(const DiffReport& report);
+std::string diffJson(const DiffReport& report);
+
+// One line per --fail-* limit the report exceeds ("RMSE 0.02 exceeds --fail-rmse 0.01").
+std::vector<std::string> exceededLimits(const DiffReport& report, const DiffOptions& options);
+
+// Throws UsageError when --heatmap may not be written: standard output (-), one of the images
+// compared (same file, whatever the name), or a regular file not named .png.
+void checkHeatmapPath(const DiffOptions& options);
+
+// The whole command: checks, compares, writes the heat map, prints the report to standard
+// output and each exceeded limit to standard error. Returns 0, or 1 when a limit is exceeded.
+int runDiff(const DiffOptions& options);
