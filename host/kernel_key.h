@@ -63,10 +63,13 @@ struct KernelKey {
   BakedScene baked;              // SPEC_BAKED and the words, when options.bakeValues
   uint32_t loopBudget = 0;       // SPEC_LOOP_BUDGET: set by the renderer for its device
   uint32_t tileOrder = 0;        // SPEC_TILE_ORDER (a VkBool32): one of a frame's tile kernels
+  // SPEC_PASS_MASK: bit (1 << AOV_*) per pass; nonzero selects the pass variant (RAYTEX_AOV) of
+  // the shaded output. Set by the renderer from Renderer::passMask, the passes its buffer holds.
+  uint32_t passMask = 0;
   bool operator==(const KernelKey& o) const {
     return shape == o.shape && outputMode == o.outputMode && textureFilter == o.textureFilter &&
            samplesPerSide == o.samplesPerSide && progressive == o.progressive && baked == o.baked &&
-           loopBudget == o.loopBudget && tileOrder == o.tileOrder;
+           loopBudget == o.loopBudget && tileOrder == o.tileOrder && passMask == o.passMask;
   }
 };
 

@@ -2,6 +2,10 @@
 
 #include "common.h"
 // Generated at build time by glslangValidator --vn (CMakeLists.txt, add_spirv).
+#include "trace_aov_box_spv.h"
+#include "trace_aov_box_tree_spv.h"
+#include "trace_aov_point_spv.h"
+#include "trace_aov_point_tree_spv.h"
 #include "trace_box_samples_spv.h"
 #include "trace_box_samples_tree_spv.h"
 #include "trace_box_spv.h"
@@ -43,6 +47,7 @@ VkDescriptorSetLayout createTraceSetLayout(const Device& device) {
       binding(BINDING_TILE_RANGES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER),
       binding(BINDING_TILE_SPHERES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER),
       binding(BINDING_TILE_ORDER, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC),
+      binding(BINDING_AOV, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER),
   };
   VkDescriptorSetLayoutCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
   info.bindingCount = uint32_t(std::size(bindings));
@@ -83,12 +88,16 @@ struct SpirvModule {
 #define SPIRV_MODULE(name) SpirvModule{name, sizeof(name)}
 
 // The build variant: debug outputs, or the shaded image with point or box textures, from one
-// sample per dispatch or N x N samples in one (trace.comp.glsl, RAYTEX_SUPERSAMPLE); each with
-// the sphere tree's code where the scene walks one (RAYTEX_SPHERE_TREE).
+// sample per dispatch or N x N samples in one (trace.comp.glsl, RAYTEX_SUPERSAMPLE), or with
+// passes (RAYTEX_AOV: either); each with the sphere tree's code where the scene walks one
+// (RAYTEX_SPHERE_TREE).
 SpirvModule traceVariant(const KernelKey& key) {
   const bool tree = key.shape.sphereTree != SPHERE_TREE_NONE;
   const bool samples = key.samplesPerSide > 1 && !key.progressive;
   if (key.outputMode != OUTPUT_SHADED) return tree ? SPIRV_MODULE(trace_debug_tree_spv) : SPIRV_MODULE(trace_debug_spv);
+  if (key.passMask != 0 && key.textureFilter == FILTER_BOX)
+    return tree ? SPIRV_MODULE(trace_aov_box_tree_spv) : SPIRV_MODULE(trace_aov_box_spv);
+  if (key.passMask != 0) return tree ? SPIRV_MODULE(trace_aov_point_tree_spv) : SPIRV_MODULE(trace_aov_point_spv);
   if (key.textureFilter == FILTER_BOX && samples)
     return tree ? SPIRV_MODULE(trace_box_samples_tree_spv) : SPIRV_MODULE(trace_box_samples_spv);
   if (key.textureFilter == FILTER_BOX) return tree ? SPIRV_MODULE(trace_box_tree_spv) : SPIRV_MODULE(trace_box_spv);
@@ -120,6 +129,8 @@ VkPipeline createTracePipeline(const Device& device, VkPipelineLayout layout, co
       {SPEC_BAKED, offsetof(KernelKey, baked.enabled), sizeof(VkBool32)},
       {SPEC_BAKED_MATERIAL_COUNT, offsetof(KernelKey, baked.materialCount), sizeof(uint32_t)},
   };
+  // Only the pass variant declares the pass mask: without passes the constants are as before it.
+  if (key.passMask != 0) entries.push_back({SPEC_PASS_MASK, offsetof(KernelKey, passMask), sizeof(uint32_t)});
   for (uint32_t i = 0; key.baked.enabled && i < BAKED_WORD_COUNT; ++i)
     entries.push_back({SPEC_BAKED_WORDS + i, uint32_t(offsetof(KernelKey, baked.words) + 4 * i), sizeof(uint32_t)});
   VkSpecializationInfo specialization{};

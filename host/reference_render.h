@@ -6,6 +6,7 @@
 
 #include "image_io.h"
 #include "mapping.h"
+#include "reference.h"
 #include "scene.h"
 #include "scene_images.h"
 
@@ -37,6 +38,24 @@ std::map<std::string, ImageRGBA8> loadReferenceImages(const Scene& scene,
 // imageTile + image clamped to [0, 1], both axes clamped to the texel centres (CLAMP_TO_EDGE:
 // the image once, its edge texels beyond).
 glm::dvec3 sampleImageReference(const ImageRGBA8& image, const TexCoordD& tc, ImageWrap wrap = ImageWrap::Repeat);
+
+// What the primary ray through the centre of pixel (x, y) of a width x height image sees, in
+// double: the oracle of the passes (common.h, AOV_*).
+struct ReferencePasses {
+  ReferenceHit hit;             // what the ray hit (kind 0: the background; every value below 0)
+  double depth = 0.0;           // t along the unit direction from the eye
+  glm::dvec3 position{0.0};     // world coordinates
+  glm::dvec3 normal{0.0};       // unit, facing the eye
+  glm::dvec3 coord{0.0};        // the solid coordinate for solid kinds, else (u, v, 0)
+  glm::dvec3 albedo{0.0};       // the texture colour, point-sampled (k_d untextured)
+  // Footprint widths along screen x and y (AOV_FOOTPRINT): the rays one pixel right and one
+  // below meet the tangent plane at the hit dp away; each width is the change of the coordinate
+  // above (unwrapped: tile + uv) between the surface points at -dp/2 and +dp/2 (on a sphere,
+  // projected onto it): exact on planes, within O(|dp|^2) of the derivative on spheres.
+  glm::dvec2 footprint{0.0};
+};
+ReferencePasses referencePasses(const Scene& scene, const std::map<std::string, ImageRGBA8>& images, int width,
+                                int height, int x, int y);
 
 // Renders with samplesPerSide^2 samples per pixel on `threads` threads (0: all cores).
 // maxImageMiB: as loadReferenceImages.

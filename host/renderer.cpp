@@ -5,6 +5,7 @@
 #include "scene_limits.h"
 
 #include <algorithm>
+#include <bitset>
 #include <chrono>
 #include <stdexcept>
 #include <string>
@@ -23,11 +24,12 @@ void writeDescriptors(Renderer& r) {
       bufferInfo(r.frame),        bufferInfo(r.spheres), bufferInfo(r.planes),      bufferInfo(r.materials),
       bufferInfo(r.lights),       bufferInfo(r.noise),   bufferInfo(r.accumulation), bufferInfo(r.pixels),
       bufferInfo(r.tree),         bufferInfo(r.treeStorage), bufferInfo(r.sphereStorage), bufferInfo(r.status),
-      bufferInfo(r.tileRanges),   bufferInfo(r.tileSpheres), {r.tileOrder.buffer, 0, 4 * TILE_ORDER_CHUNK}};
+      bufferInfo(r.tileRanges),   bufferInfo(r.tileSpheres), {r.tileOrder.buffer, 0, 4 * TILE_ORDER_CHUNK},
+      bufferInfo(r.passes)};
   const uint32_t bufferBindings[] = {BINDING_FRAME,  BINDING_SPHERES, BINDING_PLANES,       BINDING_MATERIALS,
                                      BINDING_LIGHTS, BINDING_NOISE,   BINDING_ACCUMULATION, BINDING_OUTPUT,
                                      BINDING_TREE,   BINDING_TREE_STORAGE, BINDING_SPHERE_STORAGE, BINDING_STATUS,
-                                     BINDING_TILE_RANGES, BINDING_TILE_SPHERES, BINDING_TILE_ORDER};
+                                     BINDING_TILE_RANGES, BINDING_TILE_SPHERES, BINDING_TILE_ORDER, BINDING_AOV};
 
   std::vector<VkWriteDescriptorSet> writes;
   auto write = [&](uint32_t binding, VkDescriptorType type) {
@@ -48,7 +50,7 @@ void writeDescriptors(Renderer& r) {
     const uint32_t b = bufferBindings[i];
     bool uniform = b != BINDING_ACCUMULATION && b != BINDING_OUTPUT && b != BINDING_TREE_STORAGE &&
                    b != BINDING_SPHERE_STORAGE && b != BINDING_STATUS && b != BINDING_TILE_RANGES &&
-                   b != BINDING_TILE_SPHERES;
+                   b != BINDING_TILE_SPHERES && b != BINDING_AOV;
     const VkDescriptorType type = b == BINDING_TILE_ORDER ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC
                                   : uniform               ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER
                                                           : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
@@ -139,10 +141,19 @@ VkDeviceSize accumulationBytes(const Renderer& r, uint32_t width, uint32_t heigh
   return r.accumulate ? VkDeviceSize(width) * height * 16 : 16;
 }
 
-// Rows of `width` vec4s one storage buffer holds (maxStorageBufferRange): the band height.
+// Planes of the pass buffer (BINDING_AOV): one per requested pass.
+uint32_t passPlanes(const Renderer& r) { return uint32_t(std::bitset<AOV_COUNT>(r.passMask).count()); }
+
+// The pass buffer for bands of `rows` rows; a placeholder without passes (the binding exists).
+VkDeviceSize passBytes(const Renderer& r, uint32_t width, uint32_t rows) {
+  return passPlanes(r) ? VkDeviceSize(width) * rows * 16 * passPlanes(r) : 16;
+}
+
+// Rows of `width` vec4s per output or pass plane that one storage buffer holds
+// (maxStorageBufferRange): the band height. The pass buffer holds all its planes' rows.
 uint32_t rowsPerBuffer(const Renderer& r, uint32_t width) {
-  return uint32_t(std::min<VkDeviceSize>(r.device.properties.limits.maxStorageBufferRange / (VkDeviceSize(width) * 16),
-                                         UINT32_MAX));
+  const VkDeviceSize rowBytes = VkDeviceSize(width) * 16 * std::max(passPlanes(r), 1u);
+  return uint32_t(std::min<VkDeviceSize>(r.device.properties.limits.maxStorageBufferRange / rowBytes, UINT32_MAX));
 }
 
 // The rows the output buffer holds (the band height), refusing before anything is allocated an
@@ -152,8 +163,11 @@ uint32_t rowsPerBuffer(const Renderer& r, uint32_t width) {
 // host-visible memory.
 uint32_t outputRows(const Renderer& r, uint32_t width, uint32_t height) {
   const uint32_t rows = r.accumulate ? height : std::min(height, rowsPerBuffer(r, width));
-  const VkDeviceSize buffer = VkDeviceSize(width) * std::max(rows, 1u) * 16;
-  const VkDeviceSize total = r.accumulate ? 2 * buffer + VkDeviceSize(width) * height * 4 : buffer;
+  const VkDeviceSize output = VkDeviceSize(width) * std::max(rows, 1u) * 16;
+  const VkDeviceSize passes = passBytes(r, width, std::max(rows, 1u));
+  const VkDeviceSize buffer = std::max(output, passes);
+  const VkDeviceSize total =
+      (r.accumulate ? 2 * output + VkDeviceSize(width) * height * 4 : output) + (passPlanes(r) ? passes : 0);
   const std::string size = std::to_string(width) + "x" + std::to_string(height);
   const VkDeviceSize range = r.device.properties.limits.maxStorageBufferRange;
   if (buffer > range)
@@ -186,6 +200,8 @@ void createOutput(Renderer& r, uint32_t width, uint32_t height) {
   // "Where the kernel's time goes").
   r.bandRows = rows;
   r.pixels = createBuffer(r.device, VkDeviceSize(width) * r.bandRows * 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+  destroyBuffer(r.device, r.passes);
+  r.passes = createBuffer(r.device, passBytes(r, width, r.bandRows), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
   VkCommandBuffer cmd = beginCommands(r.device);
   imageBarrier(cmd, r.display.image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL, 0, VK_ACCESS_SHADER_WRITE_BIT,
                VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
@@ -231,7 +247,7 @@ void createDescriptorSet(Renderer& r) {
   const VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1},
                                         {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 7},
                                         {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, 1},
-                                        {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 7},
+                                        {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 8},
                                         {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, MAX_IMAGES}};
   VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
   poolInfo.maxSets = 1;
@@ -299,7 +315,7 @@ void destroyRenderer(Renderer& r) {
     for (CachedPipeline& p : r.pipelines) vkDestroyPipeline(d, p.pipeline, nullptr);
     for (Buffer* b : {&r.frame, &r.spheres, &r.planes, &r.materials, &r.lights, &r.noise, &r.pixels,
                       &r.accumulation, &r.tree, &r.treeStorage, &r.sphereStorage, &r.status, &r.tileRanges,
-                      &r.tileSpheres, &r.tileOrder})
+                      &r.tileSpheres, &r.tileOrder, &r.passes})
       destroyBuffer(r.device, *b);
     destroyImage(r.device, r.display);
     destroyImages(r);
@@ -338,7 +354,8 @@ void uploadScene(Renderer& r, const GpuScene& s) {
   }
 
   bool accumulationFits = r.accumulation.size == accumulationBytes(r, r.width, r.height);
-  if (s.frame.width != r.width || s.frame.height != r.height || !r.pixels.buffer || !accumulationFits)
+  bool passesFit = r.passes.size == passBytes(r, r.width, r.bandRows);
+  if (s.frame.width != r.width || s.frame.height != r.height || !r.pixels.buffer || !accumulationFits || !passesFit)
     createOutput(r, s.frame.width, s.frame.height);
   selectBand(r, 0);
   writeDescriptors(r);
@@ -361,9 +378,11 @@ void updateSceneBuffers(Renderer& r, const GpuScene& s) {
 
 namespace {
 
-// The key with the device's loop budget: lavapipe's limit, none elsewhere.
+// The key with the device's loop budget (lavapipe's limit, none elsewhere) and the passes the
+// pass buffer holds.
 KernelKey budgeted(const Renderer& r, KernelKey key) {
   key.loopBudget = r.device.lavapipe ? uint32_t(kMaxLoopIterations) : 0u;
+  key.passMask = r.passMask;
   return key;
 }
 
@@ -514,3 +533,10 @@ void readbackFrame(Renderer& r) {
 }
 
 const float* framePixels(const Renderer& r) { return static_cast<const float*>(r.pixels.data); }
+
+const float* passPixels(const Renderer& r, Pass pass) {
+  const uint32_t bit = uint32_t(pass);
+  if (!(r.passMask >> bit & 1u)) return nullptr;
+  const uint32_t plane = uint32_t(std::bitset<AOV_COUNT>(r.passMask & ((1u << bit) - 1u)).count());
+  return static_cast<const float*>(r.passes.data) + size_t(plane) * r.width * bandHeight(r) * 4;
+}

@@ -4,6 +4,7 @@
 
 #include "device.h"
 #include "gpu_scene.h"
+#include "passes.h"
 #include "pipeline.h"
 #include "resources.h"
 #include "tile_kernels.h"
@@ -56,6 +57,14 @@ struct Renderer {
   // The float image the host reads: width * height * 4 floats of linear radiance, written by
   // the kernel (BINDING_OUTPUT) or, progressive, by readbackFrame.
   Buffer pixels;
+  // The passes (AOVs) written beside the image: bit (1 << AOV_*) per pass, set before
+  // uploadScene, which sizes `passes`; every kernel prepared then writes them (KernelKey::passMask,
+  // the pass variant), from the pixel centre. Progressive rendering writes them in the dispatch
+  // of sample 0 (renderSample); the viewer requests none.
+  uint32_t passMask = 0;
+  // BINDING_AOV: per pass in passMask, in bit order, a plane of width * bandHeight vec4s (16 bytes
+  // without passes). With passes the band height is chosen so that all the planes fit one buffer.
+  Buffer passes;
   Buffer accumulation;  // progressive sums, width * height * 4 floats when `accumulate`
   Image display;        // r32ui: progressive means as 8-bit sRGB pixels (1 x 1 unless `accumulate`)
   bool accumulate = false;  // set before uploadScene to render progressively (the viewer; headless
@@ -77,7 +86,8 @@ struct Renderer {
 void createRenderer(Renderer& renderer, const DeviceOptions& options);
 void destroyRenderer(Renderer& renderer);
 
-// Replaces the scene on the device and the output size (re-creating only what changed size).
+// Replaces the scene on the device and the output size and passes (re-creating only what
+// changed size).
 void uploadScene(Renderer& renderer, const GpuScene& scene);
 
 // Rewrites the frame, sphere, plane and light buffers after packCamera (same counts and size).
@@ -117,8 +127,13 @@ void renderFrame(Renderer& renderer);
 // After N * N of them it is bit-identical to renderFrame's image with the N x N pipeline.
 void renderSample(Renderer& renderer, uint32_t index);
 
-// Copies the rendered image into the host-visible readback buffer; waits.
+// Makes the rendered image and its passes visible to the host; waits.
 void readbackFrame(Renderer& renderer);
 
 // Linear RGBA floats of the selected band, its row 0 at the top, valid after readbackFrame.
 const float* framePixels(const Renderer& renderer);
+
+// The selected band's values of `pass`, a vec4 per pixel as common.h's AOV_* define them (values
+// in xyz, coverage in w; position camera-relative: worldPositions adds the eye), its row 0 at
+// the top, valid after readbackFrame; nullptr unless passMask holds the pass.
+const float* passPixels(const Renderer& renderer, Pass pass);

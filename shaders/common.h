@@ -61,6 +61,9 @@ using uvec4 = glm::uvec4;
 // block, not a storage buffer: lavapipe then treats the tile as the group's, not computed lane
 // by lane (docs/performance.md, "Tile kernels"). Offset 0 holds TILE_ORDER_NONE.
 #define BINDING_TILE_ORDER 16  // uniform, dynamic: uvec4[TILE_ORDER_CHUNK / 4], 4 words each
+// The passes (SPEC_PASS_MASK, the AOV_* below): per requested pass, in bit order, a plane of
+// width * bandRows vec4s (the band's rows, as BINDING_OUTPUT); a 16-byte placeholder without.
+#define BINDING_AOV 17  // storage vec4[]
 #define MAX_TILE_KERNELS 4u
 #define TILE_ORDER_CHUNK 16384u  // tiles one dispatch renders at most: 64 KiB of words
 #define TILE_ORDER_NONE 0xFFFFFFFFu
@@ -157,6 +160,7 @@ using uvec4 = glm::uvec4;
 #define SPEC_TILE_LISTS 14   // 1: primary rays test their tile's spheres (BINDING_TILE_*)
 #define SPEC_TILE_ORDER 15   // 1: workgroups render the tiles of BINDING_TILE_ORDER (tile kernels)
 #define SPEC_SHADOW_LISTS 16 // 1: shadow rays test their cell's and light's spheres (BINDING_TILE_*)
+#define SPEC_PASS_MASK 17    // bit (1 << AOV_*) per pass written to BINDING_AOV (the RAYTEX_AOV modules)
 
 // Scenes with at most this many spheres, planes or lights get kernels with the count
 // built in (the loops over them unrolled); larger ones loop to Frame's count. On lavapipe a
@@ -216,14 +220,21 @@ using uvec4 = glm::uvec4;
 // Passes (AOVs, host/passes.h): bit AOV_<NAME> of a kernel's pass mask. Each requested pass is
 // a plane of vec4 per pixel in BINDING_AOV, in bit order: its values in xyz (unused ones 0) and
 // the pixel's coverage in w (1 on a surface, 0 on the background, where xyz are 0 too).
+// They come from the primary ray through the pixel centre, with the footprint of one pixel:
+// with N x N samples the pass kernel traces the centre once more (shaders/passes.glsl).
+// "2D kinds" below are TEX_2D_KINDS and untextured materials; the rest are solid kinds.
 #define AOV_UV 0         // the mapped coordinate: (u, v, 0), or the solid coordinate for solid kinds
-#define AOV_NORMAL 1     // the unit normal facing the viewer, world axes
+#define AOV_NORMAL 1     // the unit normal facing the viewer (flipped on a back side), world axes
 #define AOV_DEPTH 2      // x: the ray's t from the eye (the primary ray's direction is unit length)
 #define AOV_POSITION 3   // the hit, camera-relative (the host adds the eye in double)
-#define AOV_ALBEDO 4     // the texture colour (the diffuse coefficient)
-#define AOV_FOOTPRINT 5  // xy: the box filter's footprint widths in texture space (FILTER_BOX)
-#define AOV_LOD 6        // x: the image's mip level (FILTER_BOX)
-#define AOV_OCTAVES 7    // x: the noise octaves kept (FILTER_BOX)
+#define AOV_ALBEDO 4     // the texture colour (the diffuse coefficient), with the kernel's filter
+// xy: the box filter's footprint along screen x and y, in texture units (one tile or one unit
+// of the solid coordinate is 1): the lengths of d(u, v)/dx and d(u, v)/dy for 2D kinds, of the
+// solid coordinate's d/dx and d/dy for solid kinds, for a step of one pixel (ray differentials
+// on the tangent plane, shaders/footprint.glsl). FILTER_BOX; 0 with FILTER_POINT.
+#define AOV_FOOTPRINT 5
+#define AOV_LOD 6      // x: the mip level the box filter reads an image at (0: the image itself); 0 for other kinds
+#define AOV_OCTAVES 7  // x: the noise octaves the box filter evaluates (the finer ones add their mean); 0 without noise
 #define AOV_COUNT 8
 
 // Alpha of the debug outputs: what the primary ray hit.

@@ -202,6 +202,9 @@ float filteredTurbulence(vec3 p, uint octaves, float cells, out float unresolved
     frequency *= 2.0;
     amplitude *= 0.5;
   } while (++i < n);
+#ifdef RAYTEX_AOV
+  keepOctavesPass(float(i));  // those evaluated; the rest add their means
+#endif
   // The dropped octaves j = i..n-1 (amplitude = 2^-i): sum 2^-j = 2 (2^-i - 2^-n) and
   // sum 4^-j = 4/3 (4^-i - 4^-n).
   float end = exp2(-float(n));
@@ -225,12 +228,18 @@ float dturbulenceDamping(float m) { return m > 0.0 ? 1.047 * pow(m, 0.852) : 0.0
 float filteredDturbulence(vec3 p, uint octaves, float cells) {
   float sum = 0.0, missing = 0.0, frequency = 1.0, amplitude = 1.0;
   vec3 slope = vec3(0.0);
+#ifdef RAYTEX_AOV
+  float kept = 0.0;  // octaves evaluated (w > 0)
+#endif
   uint n = min(octaves, NOISE_MAX_OCTAVES);
   uint i = 0u;
   if (n > 0u) do {  // a do-while, as in turbulence
     float w = octaveWeight(cells * frequency, NOISE_ABS_WEIGHT_CELLS);
     float value = NOISE_ABS_MEAN;
     if (w > 0.0) {
+#ifdef RAYTEX_AOV
+      kept += 1.0;
+#endif
       vec4 ng = perlinNoiseGrad(p * frequency);
       slope += w * ng.yzw;
       value += w * (abs(ng.x) - NOISE_ABS_MEAN);
@@ -240,6 +249,9 @@ float filteredDturbulence(vec3 p, uint octaves, float cells) {
     frequency *= 2.0;
     amplitude *= 0.5;
   } while (++i < n);
+#ifdef RAYTEX_AOV
+  keepOctavesPass(kept);
+#endif
   return sum;
 }
 #endif  // RAYTEX_FILTER_BOX

@@ -46,6 +46,12 @@
     if (TEXTURE_KIND_PRESENT(kind)) t = TEXTURE_EVAL(name); \
     break;
 
+// Whether the kind reads the solid coordinate (the others, and untextured materials, the 2D one).
+bool readsSolidCoord(uint kind) { return kind != TEX_NONE && ((TEX_2D_KINDS >> kind) & 1u) == 0u; }
+
+// The coordinate the material's kind reads: the solid one, or (u, v, 0).
+vec3 mappedCoord(Material m, TexCoord tc) { return readsSolidCoord(m.textureKind) ? tc.solid : vec3(tc.uv, 0.0); }
+
 #ifdef RAYTEX_FILTER_BOX
 vec3 textureColor(Material m, TexCoord tc, Footprint fp) {
 #else

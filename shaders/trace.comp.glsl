@@ -3,8 +3,9 @@
 // Built as several modules (CMakeLists.txt, add_spirv): the shaded image with point-sampled
 // textures; with RAYTEX_FILTER_BOX, with textures filtered over footprints (FILTER_BOX); with
 // RAYTEX_SUPERSAMPLE, N x N samples in one dispatch; with RAYTEX_DEBUG_OUTPUT, the outputs the
-// tests compare with the CPU reference; each also with RAYTEX_SPHERE_TREE, the sphere tree's
-// walks and the tile and shadow lists (intersect.glsl).
+// tests compare with the CPU reference; with RAYTEX_AOV, the shaded image (one sample or N x N,
+// point or box textures) and the passes (passes.glsl); each also with RAYTEX_SPHERE_TREE, the
+// sphere tree's walks and the tile and shadow lists (intersect.glsl).
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #extension GL_KHR_shader_subgroup_basic : require
@@ -36,6 +37,9 @@ layout(constant_id = SPEC_LOOP_BUDGET) const uint LOOP_BUDGET = 0u;
 layout(constant_id = SPEC_TILE_LISTS) const bool TILE_LISTS = false;
 layout(constant_id = SPEC_TILE_ORDER) const bool TILE_ORDER = false;
 layout(constant_id = SPEC_SHADOW_LISTS) const bool SHADOW_LISTS = false;
+#ifdef RAYTEX_AOV
+layout(constant_id = SPEC_PASS_MASK) const uint PASS_MASK = 0u;
+#endif
 
 layout(std430, binding = BINDING_OUTPUT) writeonly buffer OutputBlock { vec4 outputPixels[]; };
 layout(std140, binding = BINDING_FRAME) uniform FrameBlock { Frame frameBlock; };
@@ -128,10 +132,15 @@ Material materialAt(uint i) {
 uint sphereCount() { return SPHERE_COUNT == COUNT_FROM_FRAME ? frame.sphereCount : SPHERE_COUNT; }
 uint planeCount() { return PLANE_COUNT == COUNT_FROM_FRAME ? frame.planeCount : PLANE_COUNT; }
 uint lightCount() { return LIGHT_COUNT == COUNT_FROM_FRAME ? frame.lightCount : LIGHT_COUNT; }
-// The sphere's latitude/longitude (two atans per hit) only for kinds that read it, and the
-// coordinate debug output. (No || here: glslang turns it into branches that are invalid
-// SPIR-V outside a function.)
+// The sphere's latitude/longitude (two atans per hit) only for kinds that read it, the
+// coordinate debug output and the uv pass. (No || here: glslang turns it into branches that are
+// invalid SPIR-V outside a function.)
+#ifdef RAYTEX_AOV
+const bool SPHERE_LAT_LONG = ((SPHERE_TEXTURE_KINDS & TEX_2D_KINDS) | (PASS_MASK & (1u << AOV_UV))) != 0u;
+#include "passes.glsl"
+#else
 const bool SPHERE_LAT_LONG = ((SPHERE_TEXTURE_KINDS & TEX_2D_KINDS) | uint(OUTPUT_MODE == OUTPUT_COORDS)) != 0u;
+#endif
 
 #include "noise.glsl"
 #include "loop_budget.glsl"
@@ -157,6 +166,10 @@ vec3 albedoAt(Hit hit, Surface s, Material m, vec3 origin, vec2 film, float spac
   vec3 dpdx, dpdy;
   Footprint fp;
   TexCoord tc = footprintAt(hit, s, origin, film, spacing, fp, dpdx, dpdy);
+#ifdef RAYTEX_AOV
+  keepFootprintPass(readsSolidCoord(m.textureKind) ? vec2(length(fp.dsdx), length(fp.dsdy))
+                                                   : vec2(length(fp.duvdx), length(fp.duvdy)));
+#endif
   float lx = length(dpdx), ly = length(dpdy);
   bool alongX = lx >= ly;
   float ratio = alongX ? lx / max(ly, 1.0e-30) : ly / max(lx, 1.0e-30);
@@ -197,8 +210,36 @@ vec3 radiance(vec3 origin, vec2 film, float spacing) {
   Surface s = surfaceAt(hit, origin, dir);
   Material m = materialAt(s.material);
   vec3 albedo = albedoAt(hit, s, m, origin, film, spacing);
+#ifdef RAYTEX_AOV
+  keepSurfacePasses(mappedCoord(m, s.tc), s.n, hit.t, s.p, albedo);
+  if (passesOnly) return vec3(0.0);
+#endif
   return shade(s, m, albedo, -dir);
 }
+
+#ifdef RAYTEX_AOV
+// The pass variant's samples: those this dispatch shades (N x N, or the progressive sample
+// frame.sampleIndex), added to `sum` in the order and float operations of the other variants,
+// then, where N > 1 and this dispatch writes the passes (not after progressive sample 0), the
+// pixel centre once more, with the footprint of one pixel, for the passes alone. The last
+// sample traced leaves its passes (passes.glsl): the centre's. One call of radiance, in a
+// do-while (as RAYTEX_SUPERSAMPLE's). Returns the samples traced.
+uint traceWithPasses(vec3 origin, uvec2 pixel, inout vec3 sum) {
+  const uint n = SAMPLES_PER_SIDE;
+  const uint shaded = PROGRESSIVE ? 1u : n * n;
+  const uint traced = shaded + ((n > 1u && (!PROGRESSIVE || frame.sampleIndex == 0u)) ? 1u : 0u);
+  uint i = 0u;
+  do {
+    uint k = PROGRESSIVE ? frame.sampleIndex : i;
+    passesOnly = i == shaded;
+    clearPasses();
+    vec2 film = passesOnly ? vec2(pixel) + 0.5 : vec2(pixel) + (vec2(k % n, k / n) + 0.5) / float(n);
+    vec3 r = radiance(origin, film, passesOnly ? 1.0 : 1.0 / float(n));
+    if (!passesOnly) sum += r;
+  } while (++i < traced);
+  return traced;
+}
+#endif
 
 #ifdef RAYTEX_DEBUG_OUTPUT
 // Debug outputs at the pixel centre: texture coordinates or texture colour, HIT_* in alpha.
@@ -210,8 +251,7 @@ vec4 debugOutput(vec3 origin, vec2 film) {
   Material m = materialAt(s.material);
   if (OUTPUT_MODE == OUTPUT_ALBEDO)
     return vec4(albedoAt(hit, s, m, origin, film, 1.0), float(hit.kind));
-  bool solid = m.textureKind != TEX_NONE && ((TEX_2D_KINDS >> m.textureKind) & 1u) == 0u;
-  return vec4(solid ? s.tc.solid : vec3(s.tc.uv, 0.0), float(hit.kind));
+  return vec4(mappedCoord(m, s.tc), float(hit.kind));
 }
 #endif
 
@@ -259,7 +299,11 @@ void main() {
   const uint n = SAMPLES_PER_SIDE;
   vec3 sum = vec3(0.0);
   if (PROGRESSIVE) sum = frame.sampleIndex == 0u ? vec3(0.0) : accumulation[outputIndex].rgb;
-#ifdef RAYTEX_SUPERSAMPLE
+#if defined(RAYTEX_AOV)
+  // The shaded samples and the passes (progressive: in the dispatch of sample 0).
+  checkLoopBudget(traceWithPasses(origin, pixel, sum));
+  if (inside && (!PROGRESSIVE || frame.sampleIndex == 0u)) writePasses(outputIndex);
+#elif defined(RAYTEX_SUPERSAMPLE)
   // N x N samples in one dispatch (N > 1, not progressive). No for loop: lavapipe tests a
   // loop's condition at the top of each pass and leaves only when no lane is left, so a for
   // loop runs its body once more with every lane masked off; a do-while tests at the bottom
@@ -268,6 +312,7 @@ void main() {
   do {
     sum += radiance(origin, vec2(pixel) + (vec2(k % n, k / n) + 0.5) / float(n), 1.0 / float(n));
   } while (++k < n * n);
+  checkLoopBudget(n * n);
 #else
   // One sample per dispatch, with no loop around it: the pixel centre, or the progressive
   // sample frame.sampleIndex. (One call of radiance per build variant: the driver inlines each
@@ -276,10 +321,6 @@ void main() {
   // docs/performance.md, "One trace per kernel".)
   uint k = PROGRESSIVE ? frame.sampleIndex : 0u;
   sum += radiance(origin, vec2(pixel) + (vec2(k % n, k / n) + 0.5) / float(n), 1.0 / float(n));
-#endif
-#ifdef RAYTEX_SUPERSAMPLE
-  checkLoopBudget(n * n);
-#else
   checkLoopBudget(1u);
 #endif
   if (PROGRESSIVE) {

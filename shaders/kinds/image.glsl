@@ -117,6 +117,9 @@ vec3 imageBox(Material m, TexCoord tc, Footprint fp) {
     float a = dx.x * dx.x + dy.x * dy.x, b = dx.x * dx.y + dy.x * dy.y, c = dx.y * dx.y + dy.y * dy.y;
     if (!(a + c < 1.0e30)) {  // non-finite or huge (a differential ray parallel to the surface)
       if (tc.clampV) st.y = 0.5;
+#ifdef RAYTEX_AOV
+      keepLodPass(maxLevel);
+#endif
       return sampleImage(im.index, clampToImage(im, st, max(floor(size * exp2(-maxLevel)), 1.0)), maxLevel).rgb;
     }
     float dev = sqrt(0.25 * (a - c) * (a - c) + b * b);
@@ -131,6 +134,9 @@ vec3 imageBox(Material m, TexCoord tc, Footprint fp) {
     step = axis * sqrt(major2) / (size * k);
   }
   float lod = clamp(0.5 * log2(max(width2, 1.0e-30)) + IMAGE_LOD_BIAS, 0.0, maxLevel);
+#ifdef RAYTEX_AOV
+  keepLodPass(lod);
+#endif
   // Along the axes that do not wrap st stays half a texel of the coarser of the two levels
   // blended inside the image, so no level blends the two poles' rows or wraps a clamped edge.
   vec2 texels = vec2(max(ivec2(size) >> int(ceil(lod)), ivec2(1)));

@@ -11,6 +11,9 @@ float noisePoint(Material m, TexCoord tc) {
 // noise fades to its mean, blend 0.5, as the footprint nears the lattice period.
 float noiseBox(Material m, TexCoord tc, Footprint fp) {
   float w = octaveWeight(noiseFootprintWidth(fp, m.params.x, vec3(1.0)), NOISE_WEIGHT_CELLS);
+#ifdef RAYTEX_AOV
+  keepOctavesPass(w > 0.0 ? 1.0 : 0.0);
+#endif
   if (w <= 0.0) return 0.5;
   return clamp(0.5 + 0.5 * w * perlinNoise(noiseArgument(tc, m.params.x)), 0.0, 1.0);
 }
