@@ -143,19 +143,24 @@ const CliOption kOptions[] = {
      [](CliArgs& c, const std::string& f, const std::string& v) {
        c.render.allowRead.push_back(nonEmpty(f, v, "a directory"));
      }},
-    {"--threshold", nullptr, "T", kDiff,
+    {"--compare", nullptr, "REF", kRender,
+     "after the render, compare the output file with the image REF as raytex diff does and print the report; "
+     "exit 3 when a --fail-* limit is exceeded",
+     [](CliArgs& c, const std::string& f, const std::string& v) { c.diff.reference = nonEmpty(f, v, "an image file"); }},
+    {"--threshold", nullptr, "T", kDiff | kRender,
      "the linear channel difference a pixel must exceed to count as differing (default 0.01: above the widest "
      "step between 8-bit sRGB codes, so rounding never counts)",
      [](CliArgs& c, const std::string& f, const std::string& v) { c.diff.threshold = parseNumber(f, v, 0.0, 1e30); }},
-    {"--heatmap", nullptr, "FILE", kDiff,
+    {"--heatmap", nullptr, "FILE", kDiff | kRender,
      "write the FLIP error per pixel as a PNG heat map (dark purple: none, pale yellow: the most), atomically; the "
      "images compared are refused",
      [](CliArgs& c, const std::string& f, const std::string& v) { c.diff.heatmap = nonEmpty(f, v, "a file name"); }},
-    {"--fail-rmse", nullptr, "X", kDiff, "exit 1 when the RMSE (linear) exceeds X",
+    {"--fail-rmse", nullptr, "X", kDiff | kRender, "exit 1 (render --compare: 3) when the RMSE (linear) exceeds X",
      [](CliArgs& c, const std::string& f, const std::string& v) { c.diff.failRmse = parseNumber(f, v, 0.0, 1e30); }},
-    {"--fail-flip", nullptr, "X", kDiff, "exit 1 when the mean FLIP error exceeds X (0 to 1)",
+    {"--fail-flip", nullptr, "X", kDiff | kRender, "exit 1 (render --compare: 3) when the mean FLIP error exceeds X (0 to 1)",
      [](CliArgs& c, const std::string& f, const std::string& v) { c.diff.failFlip = parseNumber(f, v, 0.0, 1.0); }},
-    {"--fail-percent", nullptr, "P", kDiff, "exit 1 when more than P percent of the pixels differ by more than --threshold",
+    {"--fail-percent", nullptr, "P", kDiff | kRender,
+     "exit 1 (render --compare: 3) when more than P percent of the pixels differ by more than --threshold",
      [](CliArgs& c, const std::string& f, const std::string& v) { c.diff.failPercent = parseNumber(f, v, 0.0, 100.0); }},
 };
 
@@ -215,6 +220,7 @@ const char* const kExitCodes =
     "  1  a device or Vulkan failure (an image the device cannot hold included), out of memory,\n"
     "     an output file or standard output not written, an internal error\n"
     "  2  bad input: usage, a scene, an image file refused, an output raytex may not write\n"
+    "  3  render --compare: the render was written, and a --fail-* limit was exceeded\n"
     "  raytex diff, as cmp: 0 the images pass, 1 a --fail-* limit exceeded, 2 any failure\n";
 
 const CliOption* findOption(const std::string& name) {
@@ -329,9 +335,24 @@ std::string outputFormatName(const RenderOptions& r) {
   return ext;
 }
 
+// render --compare: the comparison's options only with it, and an output file to compare.
+void checkCompare(const CliArgs& cli, const std::vector<std::string>& given) {
+  if (cli.command != CliCommand::Render) return;
+  auto has = [&](const char* name) { return std::find(given.begin(), given.end(), name) != given.end(); };
+  if (!has("--compare")) {
+    for (const char* option : {"--threshold", "--heatmap", "--fail-rmse", "--fail-flip", "--fail-percent"})
+      if (has(option)) throw UsageError(std::string(option) + " applies to raytex diff and to render with --compare");
+    return;
+  }
+  const std::string& out = cli.render.output;
+  if (out == "-" || (!out.empty() && out.back() == '/'))
+    throw UsageError("--compare reads the one output file back; not with -o " + out);
+}
+
 // Options of one output format or of files on disk, refused where they would do nothing.
 void checkOutputOptions(const CliArgs& cli, const std::vector<std::string>& given) {
   auto has = [&](const char* name) { return std::find(given.begin(), given.end(), name) != given.end(); };
+  checkCompare(cli, given);
   const std::string format = outputFormatName(cli.render);
   if (has("--depth") && format != "png") throw UsageError("--depth applies to a PNG output");
   if (has("--half") && format != "exr") throw UsageError("--half applies to an EXR output");

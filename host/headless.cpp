@@ -7,6 +7,7 @@
 #include "parser.h"
 #include "render_output.h"
 #include "renderer.h"
+#include "world_position.h"
 
 #include <algorithm>
 #include <memory>
@@ -39,10 +40,12 @@ GpuScene prepareScene(const RenderOptions& options, Scene* scene, HeadlessRender
 // Whether samples go one dispatch each: where together they would pass lavapipe's loop limit
 // (kMaxLoopIterations), the progressive kernel adds them one at a time, the same image bit for
 // bit. A sphere tree's walks are not known before they run: its samples always go one at a time.
+// With passes the kernel traces the pixel centre once more.
 bool samplesPerDispatch(const Renderer& renderer, const Scene& scene, const GpuScene& gpuScene, const RenderJob& job) {
+  const uint32_t traces = job.samplesPerPixel + (renderer.passMask != 0 ? 1 : 0);
   return renderer.device.lavapipe && job.samplesPerPixel > 1 &&
          (gpuScene.shape.sphereTree != SPHERE_TREE_NONE ||
-          job.samplesPerPixel * loopIterationsPerSample(scene) > kMaxLoopIterations);
+          traces * loopIterationsPerSample(scene) > kMaxLoopIterations);
 }
 
 // The kernel built around the scene's values (the camera is fixed), and tile kernels where they
@@ -83,7 +86,23 @@ struct RenderOutput {
   const RenderOptions& options;
   std::chrono::steady_clock::time_point start;  // the scene's parse
   std::unique_ptr<ImageOutput> files;
+  glm::dvec3 eye{0.0};  // added to the position pass (world_position.h)
 };
+
+// The selected band's passes in the order of options.passes, as ImageOutput takes them; the
+// position pass in world coordinates, held in `world`.
+std::vector<const float*> bandPasses(const Renderer& renderer, const RenderOutput& output, std::vector<float>& world) {
+  std::vector<const float*> planes;
+  for (Pass pass : output.options.passes) {
+    const float* plane = passPixels(renderer, pass);
+    if (pass == Pass::Position) {
+      world = worldPositions(plane, size_t(renderer.width) * bandHeight(renderer), output.eye);
+      plane = world.data();
+    }
+    planes.push_back(plane);
+  }
+  return planes;
+}
 
 // Reads the selected band back and writes its rows to the output files.
 void keepBand(Renderer& renderer, HeadlessRender* out, RenderOutput& output) {
@@ -94,7 +113,9 @@ void keepBand(Renderer& renderer, HeadlessRender* out, RenderOutput& output) {
     const Metadata metadata = renderMetadata(output.options, out->job, facts);
     output.files = std::make_unique<ImageOutput>(renderOutputSpec(output.options, out->job, metadata));
   }
-  output.files->writeBand(int(renderer.bandFirstRow), int(bandHeight(renderer)), framePixels(renderer), {});
+  std::vector<float> world;
+  output.files->writeBand(int(renderer.bandFirstRow), int(bandHeight(renderer)), framePixels(renderer),
+                          bandPasses(renderer, output, world));
 }
 
 // Renders the image, then `extraFrames` more frames of it (timed, into out->frameMs). An
@@ -126,6 +147,8 @@ void renderPrepared(Renderer& renderer, const Scene& scene, const GpuScene& gpuS
   PhaseTimes& times = out->times;
   const int errorsBefore = renderer.device.validationErrors;
   if (renderer.device.lavapipe) checkLoopLimit(scene);
+  renderer.passMask = passMask(output.options.passes);
+  output.eye = scene.camera.eye;
   const bool perSample = samplesPerDispatch(renderer, scene, gpuScene, job);
   renderer.accumulate = perSample;
   uploadScene(renderer, gpuScene);

@@ -5,7 +5,12 @@
 #include "image_io.h"
 #include "image_load.h"
 
+#include <png.h>
+
 #include <cctype>
+#include <csetjmp>
+#include <new>
+#include <vector>
 #include <cstdio>
 
 namespace {
@@ -48,6 +53,84 @@ LinearImage readEightBit(const std::string& path, uint64_t maxBytes) {
   return out;
 }
 
+// Whether a PNG file stores 16 bits a channel: byte 24 of the file, IHDR's bit depth.
+bool sixteenBitPng(const std::string& path) {
+  FILE* f = fopen(path.c_str(), "rb");
+  if (!f) return false;
+  unsigned char head[25] = {};
+  const bool full = fread(head, 1, sizeof head, f) == sizeof head;
+  fclose(f);
+  return full && head[24] == 16;
+}
+
+struct Png16Errors {
+  char message[256] = "";
+};
+
+[[noreturn]] void png16Fail(png_structp png, png_const_charp message) {
+  snprintf(static_cast<Png16Errors*>(png_get_error_ptr(png))->message, 256, "%s", message);
+  png_longjmp(png, 1);
+}
+
+void png16Read(png_structp png, png_bytep data, size_t length) {
+  if (fread(data, 1, length, static_cast<FILE*>(png_get_io_ptr(png))) != length) png_error(png, "the file ends early");
+}
+
+// Decodes a 16-bit PNG (probed by probeImage) into `rgb16`: RGB as stored, host byte order.
+void decodePng16(const std::string& path, FILE* file, const ImageHeader& header, std::vector<uint16_t>& rgb16) {
+  Png16Errors errors;
+  png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &errors, png16Fail, nullptr);
+  png_infop info = png ? png_create_info_struct(png) : nullptr;
+  if (!info) {
+    png_destroy_read_struct(&png, nullptr, nullptr);
+    throw std::bad_alloc();
+  }
+  // Sized before setjmp: nothing that longjmp may skip back over allocates.
+  rgb16.resize(size_t(header.width) * size_t(header.height) * 3);
+  std::vector<png_bytep> rows(size_t(header.height));
+  for (size_t y = 0; y < rows.size(); ++y) rows[y] = reinterpret_cast<png_bytep>(&rgb16[y * size_t(header.width) * 3]);
+  if (setjmp(png_jmpbuf(png))) {
+    png_destroy_read_struct(&png, &info, nullptr);
+    throw ImageInputError("cannot decode image '" + path + "': " + errors.message);
+  }
+  png_set_read_fn(png, file, png16Read);
+  png_set_user_limits(png, kMaxImageFileSide, kMaxImageFileSide);
+  png_read_info(png, info);
+  if (int(png_get_image_width(png, info)) != header.width || int(png_get_image_height(png, info)) != header.height)
+    png_error(png, "the file changed while it was read");
+  png_set_gray_to_rgb(png);
+  png_set_strip_alpha(png);
+  png_set_swap(png);  // PNG stores 16-bit values big-endian
+  png_set_interlace_handling(png);
+  png_read_update_info(png, info);
+  if (png_get_bit_depth(png, info) != 16 || png_get_rowbytes(png, info) != size_t(header.width) * 6)
+    png_error(png, "unexpected row layout after conversion to 16-bit RGB");
+  png_read_image(png, rows.data());
+  png_read_end(png, nullptr);
+  png_destroy_read_struct(&png, &info, nullptr);
+}
+
+// A 16-bit PNG at its full precision: sRGB decoded to linear, alpha dropped.
+LinearImage readSixteenBit(const std::string& path, uint64_t maxBytes) {
+  const ImageHeader header = probeImage(path);
+  checkBudget(path, header.width, header.height, maxBytes);
+  FILE* file = fopen(path.c_str(), "rb");
+  if (!file) throw ImageInputError("cannot open image '" + path + "'");
+  std::vector<uint16_t> rgb16;
+  try {
+    decodePng16(path, file, header, rgb16);
+  } catch (...) {
+    fclose(file);
+    throw;
+  }
+  fclose(file);
+  std::vector<float> decode(65536);
+  for (size_t i = 0; i < decode.size(); ++i) decode[i] = float(srgbToLinear(double(i) / 65535.0));
+  LinearImage out{FloatImage{header.width, header.height, 3, std::vector<float>(rgb16.size())}, true};
+  for (size_t i = 0; i < rgb16.size(); ++i) out.image.pixels[i] = decode[rgb16[i]];
+  return out;
+}
+
 }  // namespace
 
 LinearImage readLinearImage(const std::string& path, uint64_t maxBytes) {
@@ -55,6 +138,7 @@ LinearImage readLinearImage(const std::string& path, uint64_t maxBytes) {
   // EXR and PFM hold linear values as stored, of high dynamic range.
   if (ext == "exr") return LinearImage{readExr(path, maxBytes), false};
   if (ext == "pfm") return LinearImage{readPfm(path, maxBytes), false};
-  // Every other name goes to the PNG and JPEG reader, which names what it refuses.
+  // Every other name goes to the PNG and JPEG readers, which name what they refuse.
+  if (ext == "png" && sixteenBitPng(path)) return readSixteenBit(path, maxBytes);
   return readEightBit(path, maxBytes);
 }

@@ -76,6 +76,13 @@ void runBatch(const RenderOptions& options) {
                                          " scenes failed");
 }
 
+// render --compare: the output file against the reference, as raytex diff reports it; a limit
+// exceeded is exit 3 (render's own failures keep 1 and 2).
+int compareOutput(const RenderOptions& options, DiffOptions diff) {
+  diff.test = options.output;
+  return runDiff(diff) == 0 ? 0 : 3;
+}
+
 void runRender(const RenderOptions& options) {
   if (isOutputDirectory(options.output)) return runBatch(options);
   if (options.output == "-" && isatty(fileno(stdout)))
@@ -98,7 +105,10 @@ int runCommand(const CliArgs& cli) {
     case CliCommand::Help: fputs(usageText().c_str(), stdout); break;
     case CliCommand::Version: puts(kRaytexVersion); break;
     case CliCommand::Devices: fputs(listDevices().c_str(), stdout); break;
-    case CliCommand::Render: runRender(cli.render); break;
+    case CliCommand::Render:
+      runRender(cli.render);
+      if (!cli.diff.reference.empty()) return compareOutput(cli.render, cli.diff);
+      break;
     case CliCommand::View: runViewer(cli.render); break;
     case CliCommand::Bench: runBench(cli.render, cli.bench); break;
     case CliCommand::Diff: return runDiff(cli.diff);
