@@ -150,7 +150,9 @@ TEST(CliTable, DiffTakesTwoImagesAndOnlyItsOwnOptions) {
             "--width is an option of raytex render, view and bench, not of diff");
   EXPECT_EQ(refusal({"diff", "a.png", "b.png", "-o", "x.png"}),
             "-o is an option of raytex render, view and bench, not of diff");
-  EXPECT_EQ(refusal({"render", "s.cfg", "--threshold", "0.1"}), "--threshold is an option of raytex diff, not of render");
+  EXPECT_EQ(refusal({"render", "s.cfg", "--threshold", "0.1"}),
+            "--threshold applies to raytex diff and to render with --compare");
+  EXPECT_EQ(refusal({"render", "s.cfg", "--compare", "r.png", "--threshold", "0.1"}), "");
   EXPECT_EQ(refusal({"bench", "s.cfg", "--fail-flip", "0.1"}), "--fail-flip is an option of raytex render and diff, not of bench");
   EXPECT_EQ(refusal({"diff", "a.png", "b.png", "--fail-flip", "2"}), "--fail-flip expects a number from 0 to 1, got '2'");
   EXPECT_EQ(refusal({"diff", "a.png", "b.png", "--threshold", "nan"}),
