@@ -152,6 +152,13 @@ FloatImage rgbaFloatImage(const float* rgba, int width, int height) {
   return image;
 }
 
+FloatImage rgbFloatImage(const float* rgba, int width, int height) {
+  FloatImage image{width, height, 3, std::vector<float>(size_t(width) * size_t(height) * 3)};
+  for (size_t i = 0; i < size_t(width) * size_t(height); ++i)
+    for (size_t c = 0; c < 3; ++c) image.pixels[i * 3 + c] = rgba[i * 4 + c];
+  return image;
+}
+
 FloatImage linearToSrgbImage(const FloatImage& linear) {
   FloatImage out = linear;
   for (size_t i = 0; i < pixelCount(linear); ++i)

@@ -32,6 +32,8 @@ size_t nonFiniteCount(const FloatImage& image);
 
 // Linear RGBA floats (a rendered frame, row 0 at the top) as a 4-channel FloatImage.
 FloatImage rgbaFloatImage(const float* rgba, int width, int height);
+// The same frame's colour without alpha, a 3-channel FloatImage as readLinearImage gives.
+FloatImage rgbFloatImage(const float* rgba, int width, int height);
 
 // Linear values clamped to [0, 1] and sRGB-encoded, in [0, 1] (non-finite values become 0).
 FloatImage linearToSrgbImage(const FloatImage& linear);

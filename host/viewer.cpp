@@ -7,6 +7,7 @@
 #include "median.h"
 #include "output_file.h"
 #include "parser.h"
+#include "render_output.h"
 #include "renderer.h"
 #include "window.h"
 
@@ -208,15 +209,20 @@ void reloadIfChanged(ViewerState& state, const std::string& path, const ReadPoli
 // says: 8 x 8, about a second at 60 frames per second.
 constexpr uint32_t kViewerSamplesPerPixel = 64;
 
-// F12: the image on screen, every sample in, written to `output` (the PNG raytex render writes
-// for this view). An output that is one of the scene's files now (a reload may have added it)
-// or a failed write is one line on stderr and in the title; the viewer goes on.
-void saveScreenshot(ViewerState& state, Renderer& renderer, const std::string& output, const char* settings) {
+// F12: the image on screen, every sample in, written to options.output (the file raytex render
+// writes for this view, its format and metadata included). An output that is one of the scene's
+// files now (a reload may have added it) or a failed write is one line on stderr and in the
+// title; the viewer goes on.
+void saveScreenshot(ViewerState& state, Renderer& renderer, const RenderOptions& options, const RenderJob& job,
+                    const char* settings) {
+  const std::string& output = options.output;
   std::string error = outputClash(output, state.scene);
   if (error.empty()) {
     readbackFrame(renderer);
     try {
-      writePngAtomic(output, encodeSrgb(framePixels(renderer), int(renderer.width), int(renderer.height)));
+      ImageOutput file(renderOutputSpec(options, job, renderMetadata(options, job, {})));
+      file.writeBand(0, int(renderer.height), framePixels(renderer), {});
+      file.finish();
     } catch (const Error& e) {
       error = e.what();
     }
@@ -435,7 +441,7 @@ void renderAndShow(Viewer& v, const RenderOptions& options) {
     // Every sample in: bit-identical to raytex render's image with these settings.
     state.screenshot = false;
     const std::string settings = std::to_string(v.target) + " spp, filter " + (v.job.filterBox ? "box" : "point");
-    saveScreenshot(state, v.renderer, options.output, settings.c_str());
+    saveScreenshot(state, v.renderer, options, v.job, settings.c_str());
   }
   if (!render && !state.refresh) {
     v.frameStart = Clock::now();
