@@ -22,4 +22,6 @@ export LSAN_OPTIONS=suppressions=$supp/lsan.supp:print_suppressions=0
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 export RAYTEX_SANITIZED=1  # tests/cli_test.sh, output_test.sh: skip the address-space limit tests (ASan's shadow needs terabytes)
 SWEEPS='BakedKernelsMatchTheUniformBuffers|(CourseScenes|Fields)RenderWhatTheOneKernelRenders|NoiseFilterTest|Shadow(Lists|Grids)RenderWhatTheTreeWalkRenders|RendersWhatTheLoopOverEverySphereRenders'
-ctest --test-dir "$build" -LE fuzz -E "^cli\$|$SWEEPS" --output-on-failure -j2
+# Image-quality comparisons of kernel variants and filters (the same host path as the rest):
+SWEEPS+='|ImageFilterTest|FullBlocksRenderTheirLastItems|CourseMaterialsMatchTheUnspecialisedKernel|AllScenesFiniteWhenSupersampledAndFiltered|FilteredCheckerBeatsSupersamplingAtTheHorizon|IdentityPlacementIsExact|TileKernelsWriteThePassesOfTheOneKernel'
+ctest --test-dir "$build" -LE fuzz -E "^cli\$|$SWEEPS" --output-on-failure -j3
