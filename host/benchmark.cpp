@@ -61,7 +61,7 @@ void printJson(const RenderOptions& options, const BenchOptions& bench, const Be
          "\"encode\": %.3f, \"end_to_end\": %.3f},\n \"mpixel_per_s\": %.3f, \"mray_per_s\": %.3f, "
          "\"rays_per_frame\": {\"primary\": %llu, \"shadow\": %llu}}\n",
          jsonString(options.scene).c_str(), jsonString(r.deviceName).c_str(), r.job.width, r.job.height,
-         r.job.samplesPerPixel, r.job.filterBox ? "box" : "point", bench.runs, m.device, m.parse, m.upload,
+         r.job.samplesPerPixel, textureFilterName(r.job.filter), bench.runs, m.device, m.parse, m.upload,
          m.pipeline, m.firstDispatch, m.frame, m.readback, m.encode, m.endToEnd, r.mpixels, r.mrays,
          static_cast<unsigned long long>(r.rays.primary), static_cast<unsigned long long>(r.rays.shadow));
 }
@@ -69,7 +69,7 @@ void printJson(const RenderOptions& options, const BenchOptions& bench, const Be
 void printTable(const RenderOptions& options, const BenchOptions& bench, const BenchResult& r) {
   const Medians& m = r.m;
   printf("%s: %ux%u, %u spp, %s filter, on %s\n", options.scene.c_str(), r.job.width, r.job.height,
-         r.job.samplesPerPixel, r.job.filterBox ? "box" : "point", r.deviceName.c_str());
+         r.job.samplesPerPixel, textureFilterName(r.job.filter), r.deviceName.c_str());
   printf("medians of %u runs, ms\n", bench.runs);
   const struct {
     const char* name;

@@ -61,9 +61,10 @@ double parseNumber(const std::string& flag, const std::string& text, double lo, 
   return v;
 }
 
-bool parseFilter(const std::string& flag, const std::string& text) {
-  if (text != "point" && text != "box") throw UsageError(flag + " expects point or box, got '" + text + "'");
-  return text == "box";
+TextureFilter parseFilter(const std::string& flag, const std::string& text) {
+  std::optional<TextureFilter> filter = textureFilterNamed(text);
+  if (!filter) throw UsageError(flag + " expects point, box or coverage, got '" + text + "'");
+  return *filter;
 }
 
 std::string nonEmpty(const std::string& flag, const std::string& text, const char* what) {
@@ -113,8 +114,9 @@ const CliOption kOptions[] = {
      "scene's render block, else 1 for render and bench, 64 for view)",
      [](CliArgs& c, const std::string& f, const std::string& v) { c.render.samplesPerPixel = parseSpp(f, v); }},
     {"--filter", nullptr, "MODE", kAll,
-     "texture filtering: point (default: sample at the hit) or box (average checkers over each sample's "
-     "footprint from ray differentials)",
+     "texture filtering: point (default: sample at the hit), box (average textures over each sample's "
+     "footprint from ray differentials) or coverage (box, and where a silhouette, the horizon or a shadow's "
+     "edge crosses a pixel, each side weighted by its share of the pixel; one sample per pixel)",
      [](CliArgs& c, const std::string& f, const std::string& v) { c.render.filter = parseFilter(f, v); }},
     {"--reference", nullptr, nullptr, kRender,
      "render on the CPU in float64 (slow; the accuracy reference), no Vulkan",
@@ -412,6 +414,10 @@ CliArgs parseCli(const std::vector<std::string>& args) {
   return cli;
 }
 
+TextureFilter resolvedFilter(const RenderOptions& options, const RenderSettings& s) {
+  return options.filter.value_or(s.filter.value_or(TextureFilter::Point));
+}
+
 RenderJob resolveJob(const RenderOptions& options, const RenderSettings& s, uint32_t defaultSamplesPerPixel) {
   RenderJob job;
   job.width = options.width.value_or(uint32_t(s.width.value_or(640)));
@@ -419,10 +425,15 @@ RenderJob resolveJob(const RenderOptions& options, const RenderSettings& s, uint
   job.samplesPerPixel =
       options.samplesPerPixel.value_or(s.samplesPerPixel ? uint32_t(*s.samplesPerPixel) : defaultSamplesPerPixel);
   job.samplesPerSide = uint32_t(std::lround(std::sqrt(double(job.samplesPerPixel))));
-  job.filterBox = options.filter.value_or(s.filterBox.value_or(false));
+  job.filter = resolvedFilter(options, s);
   for (Pass p : options.passes)
-    if (passInfo(p).boxFilterOnly && !job.filterBox)
+    if (passInfo(p).boxFilterOnly && job.filter != TextureFilter::Box)
       throw UsageError("--aov " + std::string(passInfo(p).name) + " comes from the box filter: add --filter box");
+  if (job.filter == TextureFilter::Coverage && job.samplesPerPixel != 1)
+    throw UsageError("--filter coverage renders one sample per pixel: --spp " + std::to_string(job.samplesPerPixel) +
+                     " needs --filter box");
+  if (job.filter == TextureFilter::Coverage && !options.passes.empty())
+    throw UsageError("--aov comes from the point or box kernel, not --filter coverage");
   if (uint64_t(job.width) * job.height > kMaxPixels)
     throw UsageError(std::to_string(job.width) + "x" + std::to_string(job.height) + " exceeds the limit of " +
                      std::to_string(kMaxPixels) + " pixels (8192x8192)");

@@ -25,7 +25,7 @@ struct RenderOptions {
   std::optional<uint32_t> width, height;  // flags; else the scene's render block; else 640x480
   int device = -1;        // --device N; -1: best available
   std::optional<uint32_t> samplesPerPixel;  // --spp: a square N*N, stratified, box filtered
-  std::optional<bool> filter;  // --filter box: textures averaged over each sample's footprint
+  std::optional<TextureFilter> filter;  // --filter
   bool reference = false;  // --reference: the float64 CPU renderer instead of Vulkan
   bool stats = false;     // --stats: one line of phase times (view: frame times at exit)
   bool validate = false;  // --validate, or RAYTEX_VALIDATION=1: Vulkan validation layers
@@ -69,10 +69,14 @@ constexpr uint64_t kMaxPixels = uint64_t(8192) * 8192;
 struct RenderJob {
   uint32_t width = 640, height = 480;
   uint32_t samplesPerPixel = 1, samplesPerSide = 1;
-  bool filterBox = false;
+  TextureFilter filter = TextureFilter::Point;
 };
 
-// Throws UsageError when the size is over kMaxPixels.
+// The filter: --filter, else the scene's render block, else point.
+TextureFilter resolvedFilter(const RenderOptions& options, const RenderSettings& scene);
+
+// Throws UsageError when the size is over kMaxPixels, or for passes or N x N samples with
+// --filter coverage.
 RenderJob resolveJob(const RenderOptions& options, const RenderSettings& scene, uint32_t defaultSamplesPerPixel);
 
 // Parses the arguments after the program name ("--name value" and "--name=value"). Throws

@@ -30,7 +30,7 @@ GpuScene prepareScene(const RenderOptions& options, Scene* scene, HeadlessRender
   out->job = resolveJob(options, scene->render, 1);
   checkRenderOutputs(options, out->job, *scene);
   PackOptions pack;
-  pack.mipmaps = out->job.filterBox;
+  pack.mipmaps = out->job.filter != TextureFilter::Point;
   pack.maxImageMiB = options.maxImageMiB;
   GpuScene gpuScene = buildGpuScene(*scene, out->job.width, out->job.height, pack);
   out->imageBytes = imageUploadBytes(gpuScene.images, pack.mipmaps);
@@ -54,7 +54,7 @@ bool samplesPerDispatch(const Renderer& renderer, const Scene& scene, const GpuS
 void preparePipelines(Renderer& renderer, const GpuScene& gpuScene, const RenderJob& job, bool perSample,
                       double samples) {
   KernelOptions kernel;
-  kernel.filterBox = job.filterBox;
+  kernel.textureFilter = kernelFilter(job.filter);
   kernel.samplesPerSide = job.samplesPerSide;
   kernel.progressive = perSample;
   kernel.bakeValues = true;
@@ -148,6 +148,7 @@ void renderPrepared(Renderer& renderer, const Scene& scene, const GpuScene& gpuS
   const int errorsBefore = renderer.device.validationErrors;
   if (renderer.device.lavapipe) checkLoopLimit(scene);
   renderer.passMask = passMask(output.options.passes);
+  renderer.coverage = job.filter == TextureFilter::Coverage;
   output.eye = scene.camera.eye;
   const bool perSample = samplesPerDispatch(renderer, scene, gpuScene, job);
   renderer.accumulate = perSample;

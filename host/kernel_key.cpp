@@ -9,11 +9,20 @@
 #include <string>
 #include <vector>
 
+uint32_t kernelFilter(TextureFilter filter) {
+  switch (filter) {
+    case TextureFilter::Point: return FILTER_POINT;
+    case TextureFilter::Box: return FILTER_BOX;
+    case TextureFilter::Coverage: return FILTER_COVERAGE;
+  }
+  return FILTER_POINT;
+}
+
 KernelKey kernelKey(const GpuScene& scene, const KernelOptions& options) {
   KernelKey key;
   key.shape = scene.shape;
   key.outputMode = options.outputMode;
-  key.textureFilter = options.filterBox ? FILTER_BOX : FILTER_POINT;
+  key.textureFilter = options.textureFilter;
   key.samplesPerSide = options.samplesPerSide;
   key.progressive = options.progressive ? 1u : 0u;
   if (options.bakeValues) key.baked = bakeScene(scene);

@@ -48,7 +48,7 @@ struct BakedScene {
 // The render's side of the key.
 struct KernelOptions {
   uint32_t outputMode = OUTPUT_SHADED;  // OUTPUT_*: the debug outputs use their own build variant
-  bool filterBox = false;               // textures filtered over footprints (FILTER_BOX)
+  uint32_t textureFilter = FILTER_POINT;  // FILTER_*
   uint32_t samplesPerSide = 1;          // N x N samples per pixel
   bool progressive = false;             // one sample per dispatch, accumulated (the viewer)
   bool bakeValues = false;              // the scene's values built in, where they fit (a fixed camera)
@@ -66,12 +66,19 @@ struct KernelKey {
   // SPEC_PASS_MASK: bit (1 << AOV_*) per pass; nonzero selects the pass variant (RAYTEX_AOV) of
   // the shaded output. Set by the renderer from Renderer::passMask, the passes its buffer holds.
   uint32_t passMask = 0;
+  // FILTER_COVERAGE's edge pass (the RAYTEX_EDGE_PASS variant, an indirect dispatch over the
+  // listed edge pixels) rather than its main kernel; set by the renderer (edgePassKey).
+  uint32_t edgePass = 0;
   bool operator==(const KernelKey& o) const {
     return shape == o.shape && outputMode == o.outputMode && textureFilter == o.textureFilter &&
            samplesPerSide == o.samplesPerSide && progressive == o.progressive && baked == o.baked &&
-           loopBudget == o.loopBudget && tileOrder == o.tileOrder && passMask == o.passMask;
+           loopBudget == o.loopBudget && tileOrder == o.tileOrder && passMask == o.passMask &&
+           edgePass == o.edgePass;
   }
 };
+
+// The kernel's FILTER_* for a render's filter.
+uint32_t kernelFilter(TextureFilter filter);
 
 // The key of the kernel that renders `scene` with `options`.
 KernelKey kernelKey(const GpuScene& scene, const KernelOptions& options);

@@ -499,9 +499,9 @@ class Parser {
       assignKnown(key, seen, "render", {"width", "height", "spp", "filter"});
       if (key.text == "filter") {
         Token v = take();
-        if (v.kind != Tok::Ident || (v.text != "point" && v.text != "box"))
-          fail(v.loc, "filter must be point or box, got " + describe(v));
-        r.filterBox = v.text == "box";
+        std::optional<TextureFilter> filter = v.kind == Tok::Ident ? textureFilterNamed(v.text) : std::nullopt;
+        if (!filter) fail(v.loc, "filter must be point, box or coverage, got " + describe(v));
+        r.filter = filter;
       } else {
         FileLoc loc;
         std::string text;

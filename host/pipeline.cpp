@@ -1,6 +1,7 @@
 #include "pipeline.h"
 
 #include "common.h"
+#include "edges_spv.h"
 // Generated at build time by glslangValidator --vn (CMakeLists.txt, add_spirv).
 #include "trace_aov_box_spv.h"
 #include "trace_aov_box_tree_spv.h"
@@ -12,6 +13,8 @@
 #include "trace_box_tree_spv.h"
 #include "trace_debug_spv.h"
 #include "trace_debug_tree_spv.h"
+#include "trace_edges_spv.h"
+#include "trace_edges_tree_spv.h"
 #include "trace_point_samples_spv.h"
 #include "trace_point_samples_tree_spv.h"
 #include "trace_point_spv.h"
@@ -48,6 +51,8 @@ VkDescriptorSetLayout createTraceSetLayout(const Device& device) {
       binding(BINDING_TILE_SPHERES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER),
       binding(BINDING_TILE_ORDER, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC),
       binding(BINDING_AOV, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER),
+      binding(BINDING_EDGE_IDS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER),
+      binding(BINDING_EDGE_LIST, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER),
   };
   VkDescriptorSetLayoutCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
   info.bindingCount = uint32_t(std::size(bindings));
@@ -94,13 +99,15 @@ struct SpirvModule {
 SpirvModule traceVariant(const KernelKey& key) {
   const bool tree = key.shape.sphereTree != SPHERE_TREE_NONE;
   const bool samples = key.samplesPerSide > 1 && !key.progressive;
+  const bool filtered = key.textureFilter != FILTER_POINT;  // FILTER_COVERAGE's main kernel is the box one
   if (key.outputMode != OUTPUT_SHADED) return tree ? SPIRV_MODULE(trace_debug_tree_spv) : SPIRV_MODULE(trace_debug_spv);
-  if (key.passMask != 0 && key.textureFilter == FILTER_BOX)
+  if (key.edgePass) return tree ? SPIRV_MODULE(trace_edges_tree_spv) : SPIRV_MODULE(trace_edges_spv);
+  if (key.passMask != 0 && filtered)
     return tree ? SPIRV_MODULE(trace_aov_box_tree_spv) : SPIRV_MODULE(trace_aov_box_spv);
   if (key.passMask != 0) return tree ? SPIRV_MODULE(trace_aov_point_tree_spv) : SPIRV_MODULE(trace_aov_point_spv);
-  if (key.textureFilter == FILTER_BOX && samples)
+  if (filtered && samples)
     return tree ? SPIRV_MODULE(trace_box_samples_tree_spv) : SPIRV_MODULE(trace_box_samples_spv);
-  if (key.textureFilter == FILTER_BOX) return tree ? SPIRV_MODULE(trace_box_tree_spv) : SPIRV_MODULE(trace_box_spv);
+  if (filtered) return tree ? SPIRV_MODULE(trace_box_tree_spv) : SPIRV_MODULE(trace_box_spv);
   if (samples) return tree ? SPIRV_MODULE(trace_point_samples_tree_spv) : SPIRV_MODULE(trace_point_samples_spv);
   return tree ? SPIRV_MODULE(trace_point_tree_spv) : SPIRV_MODULE(trace_point_spv);
 }
@@ -128,6 +135,7 @@ VkPipeline createTracePipeline(const Device& device, VkPipelineLayout layout, co
       {SPEC_PROGRESSIVE, offsetof(KernelKey, progressive), sizeof(VkBool32)},
       {SPEC_BAKED, offsetof(KernelKey, baked.enabled), sizeof(VkBool32)},
       {SPEC_BAKED_MATERIAL_COUNT, offsetof(KernelKey, baked.materialCount), sizeof(uint32_t)},
+      {SPEC_TEXTURE_FILTER, offsetof(KernelKey, textureFilter), sizeof(uint32_t)},
   };
   // Only the pass variant declares the pass mask: without passes the constants are as before it.
   if (key.passMask != 0) entries.push_back({SPEC_PASS_MASK, offsetof(KernelKey, passMask), sizeof(uint32_t)});
@@ -141,4 +149,8 @@ VkPipeline createTracePipeline(const Device& device, VkPipelineLayout layout, co
   // warmPipeline dispatches past the image: the base needs VK_PIPELINE_CREATE_DISPATCH_BASE_BIT.
   return createComputePipeline(device, layout, variant.code, variant.bytes, &specialization,
                                VK_PIPELINE_CREATE_DISPATCH_BASE_BIT);
+}
+
+VkPipeline createEdgeListPipeline(const Device& device, VkPipelineLayout layout) {
+  return createComputePipeline(device, layout, edges_spv, sizeof(edges_spv), nullptr, 0);
 }

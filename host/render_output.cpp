@@ -7,7 +7,7 @@ Metadata renderMetadata(const RenderOptions& options, const RenderJob& job, cons
       {"Software", kRaytexVersion},
       {"Image size", std::to_string(job.width) + "x" + std::to_string(job.height)},
       {"Samples per pixel", std::to_string(job.samplesPerPixel)},
-      {"Texture filter", job.filterBox ? "box" : "point"},
+      {"Texture filter", textureFilterName(job.filter)},
   };
   if (!options.fullMetadata) return m;
   char ms[32];

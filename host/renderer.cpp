@@ -25,11 +25,12 @@ void writeDescriptors(Renderer& r) {
       bufferInfo(r.lights),       bufferInfo(r.noise),   bufferInfo(r.accumulation), bufferInfo(r.pixels),
       bufferInfo(r.tree),         bufferInfo(r.treeStorage), bufferInfo(r.sphereStorage), bufferInfo(r.status),
       bufferInfo(r.tileRanges),   bufferInfo(r.tileSpheres), {r.tileOrder.buffer, 0, 4 * TILE_ORDER_CHUNK},
-      bufferInfo(r.passes)};
+      bufferInfo(r.passes),       bufferInfo(r.edgeIds), bufferInfo(r.edgeList)};
   const uint32_t bufferBindings[] = {BINDING_FRAME,  BINDING_SPHERES, BINDING_PLANES,       BINDING_MATERIALS,
                                      BINDING_LIGHTS, BINDING_NOISE,   BINDING_ACCUMULATION, BINDING_OUTPUT,
                                      BINDING_TREE,   BINDING_TREE_STORAGE, BINDING_SPHERE_STORAGE, BINDING_STATUS,
-                                     BINDING_TILE_RANGES, BINDING_TILE_SPHERES, BINDING_TILE_ORDER, BINDING_AOV};
+                                     BINDING_TILE_RANGES, BINDING_TILE_SPHERES, BINDING_TILE_ORDER, BINDING_AOV,
+                                     BINDING_EDGE_IDS, BINDING_EDGE_LIST};
 
   std::vector<VkWriteDescriptorSet> writes;
   auto write = [&](uint32_t binding, VkDescriptorType type) {
@@ -50,7 +51,7 @@ void writeDescriptors(Renderer& r) {
     const uint32_t b = bufferBindings[i];
     bool uniform = b != BINDING_ACCUMULATION && b != BINDING_OUTPUT && b != BINDING_TREE_STORAGE &&
                    b != BINDING_SPHERE_STORAGE && b != BINDING_STATUS && b != BINDING_TILE_RANGES &&
-                   b != BINDING_TILE_SPHERES && b != BINDING_AOV;
+                   b != BINDING_TILE_SPHERES && b != BINDING_AOV && b != BINDING_EDGE_IDS && b != BINDING_EDGE_LIST;
     const VkDescriptorType type = b == BINDING_TILE_ORDER ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC
                                   : uniform               ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER
                                                           : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
@@ -144,6 +145,15 @@ VkDeviceSize accumulationBytes(const Renderer& r, uint32_t width, uint32_t heigh
 // Planes of the pass buffer (BINDING_AOV): one per requested pass.
 uint32_t passPlanes(const Renderer& r) { return uint32_t(std::bitset<AOV_COUNT>(r.passMask).count()); }
 
+// The coverage filter's buffers for bands of `rows` rows: an EDGE_ID and shadow signature per
+// pixel, and the edge list's header and a pixel index per pixel; placeholders without.
+VkDeviceSize edgeIdBytes(const Renderer& r, uint32_t width, uint32_t rows) {
+  return r.coverage ? VkDeviceSize(width) * rows * 8 : 16;
+}
+VkDeviceSize edgeListBytes(const Renderer& r, uint32_t width, uint32_t rows) {
+  return r.coverage ? 16 + VkDeviceSize(width) * rows * 4 : 16;
+}
+
 // The pass buffer for bands of `rows` rows; a placeholder without passes (the binding exists).
 VkDeviceSize passBytes(const Renderer& r, uint32_t width, uint32_t rows) {
   return passPlanes(r) ? VkDeviceSize(width) * rows * 16 * passPlanes(r) : 16;
@@ -166,8 +176,9 @@ uint32_t outputRows(const Renderer& r, uint32_t width, uint32_t height) {
   const VkDeviceSize output = VkDeviceSize(width) * std::max(rows, 1u) * 16;
   const VkDeviceSize passes = passBytes(r, width, std::max(rows, 1u));
   const VkDeviceSize buffer = std::max(output, passes);
-  const VkDeviceSize total =
-      (r.accumulate ? 2 * output + VkDeviceSize(width) * height * 4 : output) + (passPlanes(r) ? passes : 0);
+  const VkDeviceSize total = (r.accumulate ? 2 * output + VkDeviceSize(width) * height * 4 : output) +
+                             (passPlanes(r) ? passes : 0) + edgeIdBytes(r, width, std::max(rows, 1u)) +
+                             edgeListBytes(r, width, std::max(rows, 1u));
   const std::string size = std::to_string(width) + "x" + std::to_string(height);
   const VkDeviceSize range = r.device.properties.limits.maxStorageBufferRange;
   if (buffer > range)
@@ -202,6 +213,12 @@ void createOutput(Renderer& r, uint32_t width, uint32_t height) {
   r.pixels = createBuffer(r.device, VkDeviceSize(width) * r.bandRows * 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
   destroyBuffer(r.device, r.passes);
   r.passes = createBuffer(r.device, passBytes(r, width, r.bandRows), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+  destroyBuffer(r.device, r.edgeIds);
+  destroyBuffer(r.device, r.edgeList);
+  r.edgeIds = createBuffer(r.device, edgeIdBytes(r, width, r.bandRows), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+  r.edgeList = createBuffer(r.device, edgeListBytes(r, width, r.bandRows),
+                            VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT |
+                                VK_BUFFER_USAGE_TRANSFER_DST_BIT);
   VkCommandBuffer cmd = beginCommands(r.device);
   imageBarrier(cmd, r.display.image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL, 0, VK_ACCESS_SHADER_WRITE_BIT,
                VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
@@ -247,7 +264,7 @@ void createDescriptorSet(Renderer& r) {
   const VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1},
                                         {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 7},
                                         {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, 1},
-                                        {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 8},
+                                        {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 10},
                                         {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, MAX_IMAGES}};
   VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
   poolInfo.maxSets = 1;
@@ -306,6 +323,7 @@ void createRenderer(Renderer& r, const DeviceOptions& options) {
   createDescriptorSet(r);
   createSampler(r);
   createTimestamps(r);
+  r.edgeListPipeline = createEdgeListPipeline(r.device, r.pipelineLayout);
 }
 
 void destroyRenderer(Renderer& r) {
@@ -313,9 +331,10 @@ void destroyRenderer(Renderer& r) {
     VkDevice d = r.device.device;
     vkDeviceWaitIdle(d);
     for (CachedPipeline& p : r.pipelines) vkDestroyPipeline(d, p.pipeline, nullptr);
+    if (r.edgeListPipeline) vkDestroyPipeline(d, r.edgeListPipeline, nullptr);
     for (Buffer* b : {&r.frame, &r.spheres, &r.planes, &r.materials, &r.lights, &r.noise, &r.pixels,
                       &r.accumulation, &r.tree, &r.treeStorage, &r.sphereStorage, &r.status, &r.tileRanges,
-                      &r.tileSpheres, &r.tileOrder, &r.passes})
+                      &r.tileSpheres, &r.tileOrder, &r.passes, &r.edgeIds, &r.edgeList})
       destroyBuffer(r.device, *b);
     destroyImage(r.device, r.display);
     destroyImages(r);
@@ -355,7 +374,9 @@ void uploadScene(Renderer& r, const GpuScene& s) {
 
   bool accumulationFits = r.accumulation.size == accumulationBytes(r, r.width, r.height);
   bool passesFit = r.passes.size == passBytes(r, r.width, r.bandRows);
-  if (s.frame.width != r.width || s.frame.height != r.height || !r.pixels.buffer || !accumulationFits || !passesFit)
+  bool edgesFit = r.edgeIds.size == edgeIdBytes(r, r.width, r.bandRows);
+  if (s.frame.width != r.width || s.frame.height != r.height || !r.pixels.buffer || !accumulationFits || !passesFit ||
+      !edgesFit)
     createOutput(r, s.frame.width, s.frame.height);
   selectBand(r, 0);
   writeDescriptors(r);
@@ -414,10 +435,56 @@ void bindAndDispatch(Renderer& r, VkCommandBuffer cmd, VkPipeline pipeline, uint
   vkCmdDispatchBase(cmd, baseX, 0, 0, groupsX, groupsY, 1);
 }
 
+// The edge pass of FILTER_COVERAGE's `key` (its main kernel's, or the tile kernels' base key),
+// or none for the other filters.
+void prepareEdgePass(Renderer& r, const KernelKey& key) {
+  r.edgePipeline = VK_NULL_HANDLE;
+  if (key.textureFilter != FILTER_COVERAGE) return;
+  KernelKey edge = key;
+  edge.edgePass = 1;
+  edge.tileOrder = 0;
+  const CachedPipeline& p = cachedPipeline(r, edge);
+  r.edgePipeline = p.pipeline;
+  r.edgeKey = p.key;
+}
+
+// A barrier from the compute shaders' writes before it to `access` at `stages` after it.
+void computeBarrier(VkCommandBuffer cmd, VkAccessFlags access, VkPipelineStageFlags stages) {
+  VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+  barrier.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
+  barrier.dstAccessMask = access;
+  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, stages, 0, 1, &barrier, 0, nullptr, 0, nullptr);
+}
+
+// Before the main kernel of FILTER_COVERAGE: an empty edge list (an indirect dispatch of no
+// workgroups).
+void clearEdgeList(Renderer& r, VkCommandBuffer cmd) {
+  const uint32_t header[4] = {0, 1, 1, 0};
+  vkCmdUpdateBuffer(cmd, r.edgeList.buffer, 0, sizeof(header), header);
+  VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+  barrier.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+  barrier.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
+  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1, &barrier, 0,
+                       nullptr, 0, nullptr);
+}
+
+// After the main kernel of FILTER_COVERAGE: the classification lists the band's edge pixels,
+// then the edge pass shades them again, one invocation each (an indirect dispatch).
+void recordEdgePass(Renderer& r, VkCommandBuffer cmd) {
+  computeBarrier(cmd, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
+  const uint32_t blockX = WORKGROUP_X * EDGE_BLOCK, blockY = WORKGROUP_Y * EDGE_BLOCK;
+  bindAndDispatch(r, cmd, r.edgeListPipeline, 0, (r.width + blockX - 1) / blockX, (bandHeight(r) + blockY - 1) / blockY);
+  computeBarrier(cmd, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_INDIRECT_COMMAND_READ_BIT,
+                 VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT);
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, r.edgePipeline);
+  vkCmdDispatchIndirect(cmd, r.edgeList.buffer, 0);
+}
+
 }  // namespace
 
 void preparePipeline(Renderer& r, const KernelKey& key) {
   r.tileDispatches.clear();
+  prepareEdgePass(r, key);
   if (r.pipeline && r.pipelineKey == budgeted(r, key)) return;
   r.pipeline = cachedPipeline(r, key).pipeline;
   r.pipelineKey = budgeted(r, key);
@@ -425,6 +492,7 @@ void preparePipeline(Renderer& r, const KernelKey& key) {
 
 void prepareTileKernels(Renderer& r, const KernelKey& key, const TilePlan& plan) {
   if (plan.kernels.empty()) return preparePipeline(r, key);
+  prepareEdgePass(r, key);
   std::vector<TileDispatch> dispatches;
   const std::vector<uint32_t> words = layOutTiles(r, plan, dispatches);
   if (words != r.tileOrderWords) {
@@ -480,10 +548,12 @@ void renderFrame(Renderer& r) {
     vkCmdResetQueryPool(cmd, r.timestamps, 0, 2);
     vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, r.timestamps, 0);
   }
+  if (r.edgePipeline) clearEdgeList(r, cmd);
   if (r.tileDispatches.empty())
     bindAndDispatch(r, cmd, r.pipeline, 0, (r.width + WORKGROUP_X - 1) / WORKGROUP_X,
                     (bandHeight(r) + WORKGROUP_Y - 1) / WORKGROUP_Y);
   for (const TileDispatch& d : r.tileDispatches) bindAndDispatch(r, cmd, d.pipeline, 0, d.count, 1, d.offset);
+  if (r.edgePipeline) recordEdgePass(r, cmd);
   if (r.timestamps) vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, r.timestamps, 1);
   VkMemoryBarrier toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER};  // the status word
   toHost.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
@@ -494,6 +564,7 @@ void renderFrame(Renderer& r) {
   checkLoopBudget(r);
   cachedPipeline(r, r.pipelineKey).dispatched = true;
   for (const TileDispatch& d : r.tileDispatches) cachedPipeline(r, d.key).dispatched = true;
+  if (r.edgePipeline) cachedPipeline(r, r.edgeKey).dispatched = true;
   r.lastFrameMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   uint64_t ticks[2] = {0, 0};
   if (r.timestamps && vkGetQueryPoolResults(r.device.device, r.timestamps, 0, 2, sizeof(ticks), ticks,

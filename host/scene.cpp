@@ -25,3 +25,18 @@ std::vector<int> usedMaterials(const Scene& scene) {
   for (const Plane& p : scene.planes) note(p.material);
   return used;
 }
+
+const char* textureFilterName(TextureFilter filter) {
+  switch (filter) {
+    case TextureFilter::Point: return "point";
+    case TextureFilter::Box: return "box";
+    case TextureFilter::Coverage: return "coverage";
+  }
+  return "point";
+}
+
+std::optional<TextureFilter> textureFilterNamed(const std::string& name) {
+  for (TextureFilter f : {TextureFilter::Point, TextureFilter::Box, TextureFilter::Coverage})
+    if (name == textureFilterName(f)) return f;
+  return std::nullopt;
+}

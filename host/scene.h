@@ -100,11 +100,21 @@ struct Camera {
   double fovY = 45.0;
 };
 
+// How a pixel's samples see textures and edges (docs/textures.md, docs/accuracy.md).
+enum class TextureFilter {
+  Point,     // the texture at the hit (the course's method)
+  Box,       // textures averaged over the sample's footprint
+  Coverage,  // Box, and the share of the pixel on each side of a silhouette, horizon or shadow edge
+};
+// The filter's name on the command line and in `render { filter = ...; }`, and back (nullopt: no such).
+const char* textureFilterName(TextureFilter filter);
+std::optional<TextureFilter> textureFilterNamed(const std::string& name);
+
 // How to render, as a scene file may ask with `render { ... }`; command-line flags override.
 struct RenderSettings {
   std::optional<int> width, height;
   std::optional<int> samplesPerPixel;  // a square number: an N x N stratified grid
-  std::optional<bool> filterBox;       // textures filtered over footprints (else point-sampled)
+  std::optional<TextureFilter> filter;
 };
 
 struct Scene {

@@ -253,7 +253,7 @@ std::string title(const ViewerState& state, uint32_t samples, uint32_t target, d
 // scene's elements of BINDING_IMAGES.
 KernelKey viewerKey(const GpuScene& packed, const Scene& scene, const RenderJob& job) {
   KernelOptions options;
-  options.filterBox = job.filterBox;
+  options.textureFilter = kernelFilter(job.filter);
   options.samplesPerSide = job.samplesPerSide;
   options.progressive = true;
   KernelKey key = kernelKey(packed, options);
@@ -349,9 +349,11 @@ void loadScene(Viewer& v, const RenderOptions& options) {
   ViewerState& state = v.state;
   state.scene = parseSceneFile(options.scene, ReadPolicy{options.allowRead});
   checkOutput(options.output, state.scene);  // F12 writes -o
+  if (resolvedFilter(options, state.scene.render) == TextureFilter::Coverage)
+    throw UsageError("view shows the point and box filters: render --filter coverage with raytex render");
   v.job = resolveJob(options, state.scene.render, kViewerSamplesPerPixel);
   v.target = v.job.samplesPerSide * v.job.samplesPerSide;
-  v.pack.mipmaps = v.job.filterBox;  // mip chains only for the filtered kernel
+  v.pack.mipmaps = v.job.filter != TextureFilter::Point;  // mip chains only for the filtered kernel
   v.pack.allMaterials = true;
   v.pack.maxImageMiB = options.maxImageMiB;
   state.orbit = orbitOf(state.scene.camera);
@@ -440,7 +442,7 @@ void renderAndShow(Viewer& v, const RenderOptions& options) {
   if (state.screenshot && v.samples == v.target) {
     // Every sample in: bit-identical to raytex render's image with these settings.
     state.screenshot = false;
-    const std::string settings = std::to_string(v.target) + " spp, filter " + (v.job.filterBox ? "box" : "point");
+    const std::string settings = std::to_string(v.target) + " spp, filter " + textureFilterName(v.job.filter);
     saveScreenshot(state, v.renderer, options, v.job, settings.c_str());
   }
   if (!render && !state.refresh) {

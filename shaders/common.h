@@ -64,6 +64,14 @@ using uvec4 = glm::uvec4;
 // The passes (SPEC_PASS_MASK, the AOV_* below): per requested pass, in bit order, a plane of
 // width * bandRows vec4s (the band's rows, as BINDING_OUTPUT); a 16-byte placeholder without.
 #define BINDING_AOV 17  // storage vec4[]
+// The coverage filter (FILTER_COVERAGE, shaders/coverage.glsl): the main kernel writes per pixel
+// what its centre sees; the edge classification lists the pixels whose neighbours see something
+// else; the edge pass shades those again. 16-byte placeholders without it.
+#define BINDING_EDGE_IDS 18   // storage uvec2[width * bandRows]: (EDGE_ID of the hit, shadow signature)
+#define BINDING_EDGE_LIST 19  // storage: uvec4 (workgroups x, y, z of the edge pass; count), uint pixels[]
+#define EDGE_GROUP_SIZE 64u   // edge pixels per workgroup of the edge pass (WORKGROUP_X * WORKGROUP_Y)
+#define EDGE_BLOCK 4          // pixels per side of the block one invocation of the classification lists
+#define EDGE_KIND_SHIFT 30u   // EDGE_ID: HIT_* << EDGE_KIND_SHIFT | the object's index
 #define MAX_TILE_KERNELS 4u
 #define TILE_ORDER_CHUNK 16384u  // tiles one dispatch renders at most: 64 KiB of words
 #define TILE_ORDER_NONE 0xFFFFFFFFu
@@ -161,6 +169,7 @@ using uvec4 = glm::uvec4;
 #define SPEC_TILE_ORDER 15   // 1: workgroups render the tiles of BINDING_TILE_ORDER (tile kernels)
 #define SPEC_SHADOW_LISTS 16 // 1: shadow rays test their cell's and light's spheres (BINDING_TILE_*)
 #define SPEC_PASS_MASK 17    // bit (1 << AOV_*) per pass written to BINDING_AOV (the RAYTEX_AOV modules)
+#define SPEC_TEXTURE_FILTER 18  // FILTER_*: FILTER_COVERAGE makes the box kernel write BINDING_EDGE_IDS
 
 // Scenes with at most this many spheres, planes or lights get kernels with the count
 // built in (the loops over them unrolled); larger ones loop to Frame's count. On lavapipe a
@@ -208,6 +217,9 @@ using uvec4 = glm::uvec4;
 #define FILTER_BOX 1    // average over the sample's footprint (ray differentials): in closed
                         // form for checker, solid_checker and bricks, band-limited for the
                         // noise kinds, from the mip chain for images (docs/textures.md)
+#define FILTER_COVERAGE 2  // FILTER_BOX, and where a silhouette, the horizon or a shadow's edge
+                           // crosses the pixel, the share of the pixel on each side in closed
+                           // form (shaders/coverage.glsl, docs/accuracy.md)
 
 // Material.imageIndex's wrap bit: the image appears once (CLAMP_TO_EDGE), not tiled.
 #define IMAGE_WRAP_CLAMP 0x10000u

@@ -58,8 +58,22 @@ vec3 offsetOrigin(vec3 p, vec3 n) {
               abs(p.z) < nearZero ? p.z + absoluteStep * n.z : stepped.z);
 }
 
-// Phong: ambient + per light (diffuse k_d N.L + specular k_s (R.V)^shininess) when
-// the light is visible. A texture's colour replaces k_d and also tints the ambient
+// How much of light `light` reaches the sample from o along unit l (dist away): 1 or 0 from one
+// shadow ray (noted for the coverage filter's edge classification), or, in the coverage
+// filter's edge pass, the lit share of the sample's footprint (coverage.glsl). `passes`: as
+// occluded's.
+float visibleShare(vec3 o, vec3 l, float dist, uint light, out uint passes) {
+#ifdef RAYTEX_EDGE_PASS
+  return litShare(o, l, dist, light, passes);
+#else
+  if (!occluded(o, l, dist, light, passes)) return 1.0;
+  noteShadow(light);
+  return 0.0;
+#endif
+}
+
+// Phong: ambient + per light (diffuse k_d N.L + specular k_s (R.V)^shininess) times the
+// light's visible share. A texture's colour replaces k_d and also tints the ambient
 // term, so the pattern stays visible in shadow. Colours are >= 0 but unbounded: a product of
 // large ones overflows to infinity, and infinity times a zero channel is NaN, so each product
 // that is multiplied again, and the result, are clamped to RADIANCE_LIMIT (common.h).
@@ -75,14 +89,14 @@ vec3 shade(Surface s, Material m, vec3 albedo, vec3 toEye) {
     float nDotL = dot(s.n, l);
     if (nDotL <= 0.0) continue;
     uint passes;
-    bool shadowed = occluded(origin, l, dist, i, passes);
+    float lit = visibleShare(origin, l, dist, i, passes);
     if ((SPHERE_TREE == SPHERE_TREE_NONE && SPHERE_COUNT == COUNT_FROM_FRAME) || PLANE_COUNT == COUNT_FROM_FRAME)
       countLoop(passes);
-    if (shadowed) continue;
+    if (!(lit > 0.0)) continue;
     vec3 r = reflect(-l, s.n);
     float rDotV = max(dot(r, toEye), 0.0);
     vec3 specular = rDotV > 0.0 ? m.specular.rgb * pow(rDotV, m.specular.w) : vec3(0.0);
-    color += lightAt(i).color.rgb * min(albedo * nDotL + specular, vec3(RADIANCE_LIMIT));
+    color += lit * lightAt(i).color.rgb * min(albedo * nDotL + specular, vec3(RADIANCE_LIMIT));
   }
   if (LIGHT_COUNT == COUNT_FROM_FRAME) countLoop(lightCount());
   return min(color, vec3(RADIANCE_LIMIT));

@@ -5,7 +5,9 @@
 // RAYTEX_SUPERSAMPLE, N x N samples in one dispatch; with RAYTEX_DEBUG_OUTPUT, the outputs the
 // tests compare with the CPU reference; with RAYTEX_AOV, the shaded image (one sample or N x N,
 // point or box textures) and the passes (passes.glsl); each also with RAYTEX_SPHERE_TREE, the
-// sphere tree's walks and the tile and shadow lists (intersect.glsl).
+// sphere tree's walks and the tile and shadow lists (intersect.glsl); with RAYTEX_EDGE_PASS
+// (and RAYTEX_FILTER_BOX), the coverage filter's edge pass over the listed pixels
+// (coverage.glsl).
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #extension GL_KHR_shader_subgroup_basic : require
@@ -40,6 +42,9 @@ layout(constant_id = SPEC_SHADOW_LISTS) const bool SHADOW_LISTS = false;
 #ifdef RAYTEX_AOV
 layout(constant_id = SPEC_PASS_MASK) const uint PASS_MASK = 0u;
 #endif
+// FILTER_COVERAGE: the box kernel also writes what each pixel's centre sees (BINDING_EDGE_IDS).
+layout(constant_id = SPEC_TEXTURE_FILTER) const uint TEXTURE_FILTER = FILTER_POINT;
+const bool EDGE_IDS = TEXTURE_FILTER == FILTER_COVERAGE;
 
 layout(std430, binding = BINDING_OUTPUT) writeonly buffer OutputBlock { vec4 outputPixels[]; };
 layout(std140, binding = BINDING_FRAME) uniform FrameBlock { Frame frameBlock; };
@@ -58,6 +63,13 @@ layout(std430, binding = BINDING_STATUS) buffer StatusBlock { uint status[STATUS
 layout(std430, binding = BINDING_TILE_RANGES) readonly buffer TileRanges { uint tileRanges[]; };
 layout(std430, binding = BINDING_TILE_SPHERES) readonly buffer TileSpheres { uint tileSpheres[]; };
 layout(std140, binding = BINDING_TILE_ORDER) uniform TileOrderBlock { uvec4 tileOrder[TILE_ORDER_CHUNK / 4u]; };
+layout(std430, binding = BINDING_EDGE_IDS) buffer EdgeIdBlock { uvec2 edgeIds[]; };
+#ifdef RAYTEX_EDGE_PASS
+layout(std430, binding = BINDING_EDGE_LIST) readonly buffer EdgeListBlock {
+  uvec4 edgeHeader;
+  uint edgePixels[];
+};
+#endif
 
 #include "baked.glsl"
 
@@ -142,12 +154,23 @@ const bool SPHERE_LAT_LONG = ((SPHERE_TEXTURE_KINDS & TEX_2D_KINDS) | (PASS_MASK
 const bool SPHERE_LAT_LONG = ((SPHERE_TEXTURE_KINDS & TEX_2D_KINDS) | uint(OUTPUT_MODE == OUTPUT_COORDS)) != 0u;
 #endif
 
+// What the sample's primary ray hit (EDGE_ID) and a sum of a hash per light its shadow rays
+// found blocked: the pixel's entry in BINDING_EDGE_IDS (EDGE_IDS).
+uint edgeHit = 0u;
+uint edgeShadow = 0u;
+void noteShadow(uint light) {
+  if (EDGE_IDS) edgeShadow += (light + 1u) * 0x9E3779B9u;
+}
+
 #include "noise.glsl"
 #include "loop_budget.glsl"
 #include "mapping.glsl"
 #include "intersect.glsl"
-#include "shading.glsl"
 #include "camera.glsl"
+#ifdef RAYTEX_EDGE_PASS
+#include "coverage.glsl"
+#endif
+#include "shading.glsl"
 #ifdef RAYTEX_FILTER_BOX
 #include "footprint.glsl"
 #endif
@@ -166,6 +189,10 @@ vec3 albedoAt(Hit hit, Surface s, Material m, vec3 origin, vec2 film, float spac
   vec3 dpdx, dpdy;
   Footprint fp;
   TexCoord tc = footprintAt(hit, s, origin, film, spacing, fp, dpdx, dpdy);
+#ifdef RAYTEX_EDGE_PASS
+  shadeDpdx = dpdx;
+  shadeDpdy = dpdy;
+#endif
 #ifdef RAYTEX_AOV
   keepFootprintPass(readsSolidCoord(m.textureKind) ? vec2(length(fp.dsdx), length(fp.dsdy))
                                                    : vec2(length(fp.duvdx), length(fp.duvdy)));
@@ -206,9 +233,13 @@ vec3 albedoAt(Hit hit, Surface s, Material m, vec3 origin, vec2 film, float spac
 vec3 radiance(vec3 origin, vec2 film, float spacing) {
   vec3 dir = primaryRay(film);
   Hit hit = closestHit(origin, dir);
+  edgeHit = hit.kind << EDGE_KIND_SHIFT | (hit.kind == HIT_NONE ? 0u : hit.index);
   if (hit.kind == HIT_NONE) return frame.background.rgb;
   Surface s = surfaceAt(hit, origin, dir);
   Material m = materialAt(s.material);
+#ifdef RAYTEX_EDGE_PASS
+  shadeSelf = hit.kind == HIT_SPHERE ? hit.index : 0xFFFFFFFFu;
+#endif
   vec3 albedo = albedoAt(hit, s, m, origin, film, spacing);
 #ifdef RAYTEX_AOV
   keepSurfacePasses(mappedCoord(m, s.tc), s.n, hit.t, s.p, albedo);
@@ -276,6 +307,37 @@ uvec2 invocationPixel() {
   return uvec2(tile & 0xFFFFu, tile >> 16u) * TILE_SIZE + gl_LocalInvocationID.xy;
 }
 
+#ifdef RAYTEX_EDGE_PASS
+// The coverage filter's edge pass: invocation i of the indirect dispatch shades listed pixel i
+// again (coverage.glsl): the centre's side of the nearest edge and the far side, each at the
+// middle of its part, mixed by their shares. Invocations past the list's end shade its last
+// pixel and store nothing.
+void main() {
+  cacheScene();
+  uint slot = gl_WorkGroupID.x * EDGE_GROUP_SIZE + gl_LocalInvocationIndex;
+  uint count = edgeHeader.w;
+  bool inside = slot < count;
+  uint outputIndex = edgePixels[min(slot, count - 1u)];
+  uvec2 pixel = uvec2(outputIndex % frame.width, outputIndex / frame.width + frame.rowOffset);
+  primaryTile = (pixel.y / TILE_SIZE) * frame.tileColumns + pixel.x / TILE_SIZE;
+  shadowCell = (pixel.y / (TILE_SIZE * SHADOW_CELL)) * frame.shadowColumns + pixel.x / (TILE_SIZE * SHADOW_CELL);
+  vec3 origin = frame.eye.xyz;
+  vec2 film = vec2(pixel) + 0.5;
+  vec2 centreSide = film, farSide = film;
+  uint edge;
+  float share = nearestEdge(origin, film, pixel, edgeIds[outputIndex].x, edge)
+                    ? edgeSplit(edge, origin, film, centreSide, farSide)
+                    : 1.0;
+  // One call of radiance, in a do-while (as RAYTEX_SUPERSAMPLE's).
+  vec3 sum = vec3(0.0);
+  uint i = 0u;
+  do {
+    sum += (i == 0u ? share : 1.0 - share) * radiance(origin, i == 0u ? centreSide : farSide, 1.0);
+  } while (++i < (share < 1.0 ? 2u : 1u));
+  checkLoopBudget(2u);
+  if (inside) outputPixels[outputIndex] = vec4(sum, 1.0);
+}
+#else
 void main() {
   cacheScene();
   // Invocations past the image's edge (in the last workgroups) trace the edge pixel and store
@@ -322,6 +384,7 @@ void main() {
   uint k = PROGRESSIVE ? frame.sampleIndex : 0u;
   sum += radiance(origin, vec2(pixel) + (vec2(k % n, k / n) + 0.5) / float(n), 1.0 / float(n));
   checkLoopBudget(1u);
+  if (EDGE_IDS && inside) edgeIds[outputIndex] = uvec2(edgeHit, edgeShadow);
 #endif
   if (PROGRESSIVE) {
     if (inside) {
@@ -334,3 +397,4 @@ void main() {
 #endif
   if (inside) outputPixels[outputIndex] = result;
 }
+#endif  // RAYTEX_EDGE_PASS

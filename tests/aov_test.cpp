@@ -78,7 +78,7 @@ class AovTest : public RenderTest {
     GpuScene gpuScene = buildGpuScene(scene, w, h);
     uploadScene(*renderer_, gpuScene);
     KernelOptions kernel;
-    kernel.filterBox = o.filter == FILTER_BOX;
+    kernel.textureFilter = o.filter;
     kernel.samplesPerSide = o.samplesPerSide;
     kernel.progressive = o.progressive;
     const KernelKey key = kernelKey(gpuScene, kernel);

@@ -57,7 +57,7 @@ TEST(CliTable, LongOptionsTakeTheirValueAfterASpaceOrAnEqualsSign) {
     EXPECT_EQ(cli.command, CliCommand::Render);
     EXPECT_EQ(cli.render.scene, "s.cfg");
     EXPECT_EQ(cli.render.width.value_or(0), 320u);
-    EXPECT_EQ(cli.render.filter.value_or(false), true);
+    EXPECT_EQ(cli.render.filter, TextureFilter::Box);
     EXPECT_EQ(cli.render.output, "a.png");
   }
   EXPECT_EQ(parseCli({"bench", "s.cfg", "--runs=7"}).bench.runs, 7u);
@@ -126,8 +126,29 @@ TEST(CliTable, PassesAreNamedAndNeedFilesAndTheBoxFilterWhereTheyComeFromIt) {
   EXPECT_NE(refusal({"view", "s.cfg", "--aov", "uv"}), "");
   RenderOptions options = parseCli({"render", "s.cfg", "--aov", "lod"}).render;
   EXPECT_THROW(resolveJob(options, RenderSettings{}, 1), UsageError);
-  options.filter = true;
+  options.filter = TextureFilter::Box;
   EXPECT_NO_THROW(resolveJob(options, RenderSettings{}, 1));
+  options.filter = TextureFilter::Coverage;
+  EXPECT_THROW(resolveJob(options, RenderSettings{}, 1), UsageError);  // passes come from point or box
+}
+
+TEST(CliTable, CoverageIsAFilterOfOneSamplePerPixel) {
+  EXPECT_EQ(parseCli({"render", "s.cfg", "--filter", "coverage"}).render.filter, TextureFilter::Coverage);
+  EXPECT_EQ(refusal({"render", "s.cfg", "--filter", "cone"}),
+            "--filter expects point, box or coverage, got 'cone'");
+  RenderOptions options = parseCli({"render", "s.cfg", "--filter", "coverage", "--spp", "4"}).render;
+  try {
+    resolveJob(options, RenderSettings{}, 1);
+    ADD_FAILURE() << "--spp 4 with --filter coverage was accepted";
+  } catch (const UsageError& e) {
+    EXPECT_STREQ(e.what(), "--filter coverage renders one sample per pixel: --spp 4 needs --filter box");
+  }
+  RenderSettings scene;
+  scene.filter = TextureFilter::Coverage;
+  options = parseCli({"render", "s.cfg"}).render;
+  EXPECT_EQ(resolveJob(options, scene, 1).filter, TextureFilter::Coverage);
+  options.filter = TextureFilter::Point;  // the flag over the render block
+  EXPECT_EQ(resolveJob(options, scene, 1).filter, TextureFilter::Point);
 }
 
 TEST(CliTable, DiffTakesTwoImagesAndOnlyItsOwnOptions) {

@@ -329,7 +329,7 @@ TEST(KernelKey, BuiltFromTheSceneAndTheOptions) {
                                "key.cfg");
   GpuScene g = buildGpuScene(scene, 8, 8);
   KernelOptions options;
-  options.filterBox = true;
+  options.textureFilter = FILTER_BOX;
   options.samplesPerSide = 3;
   options.progressive = true;
   KernelKey key = kernelKey(g, options);

@@ -868,11 +868,12 @@ TEST(ParserRender, BlockSetsSizeSamplesAndFilter) {
   EXPECT_EQ(s.render.width, 320);
   EXPECT_EQ(s.render.height, 200);
   EXPECT_EQ(s.render.samplesPerPixel, 16);
-  EXPECT_EQ(s.render.filterBox, true);
+  EXPECT_EQ(s.render.filter, TextureFilter::Box);
+  EXPECT_EQ(parseSceneText("render { filter = coverage; }\n", "c.cfg").render.filter, TextureFilter::Coverage);
   Scene none = parseSceneText("", "e.cfg");
   EXPECT_FALSE(none.render.width.has_value());
   EXPECT_FALSE(none.render.samplesPerPixel.has_value());
-  EXPECT_FALSE(none.render.filterBox.has_value());
+  EXPECT_FALSE(none.render.filter.has_value());
 }
 
 TEST(ParserRender, Errors) {
@@ -880,7 +881,7 @@ TEST(ParserRender, Errors) {
   EXPECT_EQ(errorOf("render { width = 0; }\n"), "t.cfg:1:18: width must be a whole number from 1 to 16384, got 0");
   EXPECT_EQ(errorOf("render { height = 2.5; }\n"),
             "t.cfg:1:19: height must be a whole number from 1 to 16384, got 2.5");
-  EXPECT_EQ(errorOf("render { filter = bilinear; }\n"), "t.cfg:1:19: filter must be point or box, got 'bilinear'");
+  EXPECT_EQ(errorOf("render { filter = bilinear; }\n"), "t.cfg:1:19: filter must be point, box or coverage, got 'bilinear'");
   EXPECT_EQ(errorOf("render { samples = 4; }\n"), "t.cfg:1:10: unknown key 'samples' in render");
   EXPECT_EQ(errorOf("render { }\nrender { }\n"), "t.cfg:2:1: duplicate render (first defined at t.cfg:1:1)");
 }

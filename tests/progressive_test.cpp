@@ -25,7 +25,7 @@ class ProgressiveTest : public RenderTest {
     GpuScene gpuScene = buildGpuScene(scene, kWidth, kHeight);
     uploadScene(*renderer_, gpuScene);
     KernelOptions kernel;
-    kernel.filterBox = filter == FILTER_BOX;
+    kernel.textureFilter = filter;
     kernel.samplesPerSide = n;
     kernel.progressive = true;
     preparePipeline(*renderer_, kernelKey(gpuScene, kernel));

@@ -27,7 +27,7 @@ class SphereTreeTest : public RenderTest {
     uploadScene(*renderer_, g);
     KernelOptions kernel;
     kernel.outputMode = mode;
-    kernel.filterBox = filter == FILTER_BOX;
+    kernel.textureFilter = filter;
     KernelKey key = kernelKey(g, kernel);
     key.shape.shadowLists &= uint32_t(shadowLists);
     preparePipeline(*renderer_, key);

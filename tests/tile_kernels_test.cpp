@@ -38,7 +38,7 @@ class TileKernelsTest : public RenderTest {
     renderer_->accumulate = how.progressive;
     uploadScene(*renderer_, g);
     KernelOptions kernel;
-    kernel.filterBox = how.filter == FILTER_BOX;
+    kernel.textureFilter = how.filter;
     kernel.samplesPerSide = how.samplesPerSide;
     kernel.bakeValues = how.baked;
     kernel.progressive = how.progressive;

@@ -39,10 +39,11 @@ class RenderTest : public ::testing::Test {
                             const SceneShape* shape = nullptr, bool baked = false,
                             const BakedScene* bakedScene = nullptr) {
     GpuScene gpuScene = buildGpuScene(scene, width, height);
+    renderer_->coverage = filter == FILTER_COVERAGE;
     uploadScene(*renderer_, gpuScene);
     KernelOptions kernel;
     kernel.outputMode = mode;
-    kernel.filterBox = filter == FILTER_BOX;
+    kernel.textureFilter = filter;
     kernel.samplesPerSide = samplesPerSide;
     kernel.bakeValues = baked;
     KernelKey key = kernelKey(gpuScene, kernel);

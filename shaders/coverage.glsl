@@ -1,0 +1,150 @@
+// The coverage filter (FILTER_COVERAGE): analytic edge coverage at one ray per pixel, after
+// Amanatides' cones ("Ray tracing with cones", SIGGRAPH 1984). Raytex renders analytic spheres
+// and planes only, so the edges that cross a pixel have closed forms:
+// - a sphere's silhouette: the distance of the sphere's centre from the primary ray's line
+//   minus the radius (coverGap);
+// - a plane's horizon: where the primary ray turns parallel to the plane, a straight line on the
+//   film (coverGap);
+// - a shadow's edge: the distance of the occluding sphere's centre from the segment from the
+//   surface point to the light, minus the radius, over the pixel's footprint on the surface
+//   (litShare).
+// Each such gap g is negative on the covered (or shadowed) side; linearised over the pixel, the
+// share of the pixel square on that side is shareBelow(g, gradient). The main (box) kernel writes
+// what each pixel's centre sees (BINDING_EDGE_IDS); the classification (edges.comp.glsl) lists
+// the pixels a neighbour of which sees something else; this edge pass shades them again: the
+// surface at the centre's side and the one across the nearest edge, each at the middle of its
+// part of the pixel, mixed by their shares, with every light weighted by its lit share. Textures
+// keep the box filter. Approximations (docs/accuracy.md, "The coverage filter"): two surfaces per
+// pixel (the edge nearest the centre), straight edges within a pixel, the occluders' shares
+// multiplied as if independent, shadows of planes and the edges where two surfaces cut each other
+// not covered.
+//
+// Needs (declared by the including kernel): edgeIds, frame, sphereAt, planeAt, sphereCount,
+// planeCount, primaryRayUnnormalized, intersectPlane, occluded.
+#ifndef RAYTEX_COVERAGE_GLSL
+#define RAYTEX_COVERAGE_GLSL
+
+// The share of the pixel square (side 1, centred on the sample) where value + gradient . x < 0,
+// x the offset from the centre in pixels: the area cut off by a straight edge (the
+// distribution of x . n over the square is a trapezoid; this is its integral).
+float shareBelow(float value, vec2 gradient) {
+  float len = length(gradient);
+  if (!(len > 1.0e-20)) return value < 0.0 ? 1.0 : 0.0;
+  float u = -value / len;  // the edge's distance from the centre along n
+  vec2 n = abs(gradient) / len;
+  float a = max(n.x, n.y), b = min(n.x, n.y);
+  float inner = 0.5 * (a - b), outer = 0.5 * (a + b);
+  if (u <= -outer) return 0.0;
+  if (u >= outer) return 1.0;
+  if (u < -inner) return (u + outer) * (u + outer) / (2.0 * a * b);
+  if (u > inner) return 1.0 - (outer - u) * (outer - u) / (2.0 * a * b);
+  return 0.5 + u / a;
+}
+
+// The object of an EDGE_ID, and its kind (HIT_*).
+uint edgeKind(uint id) { return id >> EDGE_KIND_SHIFT; }
+uint edgeIndex(uint id) { return id & ((1u << EDGE_KIND_SHIFT) - 1u); }
+
+// Negative where the object `id` covers the primary ray through `film` (it may still be hidden
+// by a nearer one), positive where the ray passes it; 0 on its silhouette or horizon.
+float coverGap(uint id, vec3 o, vec2 film) {
+  vec3 d = primaryRayUnnormalized(film);
+  if (edgeKind(id) == HIT_PLANE) {
+    // Linear in film: the horizon is a straight line. The ray meets the plane ahead where d . n
+    // has the sign of the eye's side.
+    vec4 nd = planeAt(edgeIndex(id)).normalDistance;
+    return (nd.w - dot(nd.xyz, o) >= 0.0 ? -1.0 : 1.0) * dot(nd.xyz, d) / length(d);
+  }
+  vec4 cr = sphereAt(edgeIndex(id)).centerRadius;
+  vec3 f = cr.xyz - o, u = normalize(d);
+  float along = dot(f, u);
+  return (along > 0.0 ? length(f - along * u) : length(f)) - cr.w;
+}
+
+// The gap's change over one pixel along x and y (central differences: exact for the horizon,
+// within the silhouette's curvature for spheres).
+vec2 coverGapGradient(uint id, vec3 o, vec2 film) {
+  return vec2(coverGap(id, o, film + vec2(0.5, 0.0)) - coverGap(id, o, film - vec2(0.5, 0.0)),
+              coverGap(id, o, film + vec2(0.0, 0.5)) - coverGap(id, o, film - vec2(0.0, 0.5)));
+}
+
+// The object whose edge lies nearest the centre `film` of `pixel`, along the segments to the
+// neighbours whose centres see another object: for each such neighbour, the centre's object and
+// the neighbour's are the candidates, and an edge counts where its gap changes sign on the
+// segment. False where no candidate's does (two surfaces that cut each other).
+bool nearestEdge(vec3 o, vec2 film, uvec2 pixel, uint centreId, out uint edgeId) {
+  float nearest = 2.0;
+  edgeId = centreId;
+  for (int k = 0; k < 9; ++k) {
+    ivec2 step = ivec2(k % 3 - 1, k / 3 - 1);
+    ivec2 q = ivec2(pixel) + step - ivec2(0, frame.rowOffset);
+    if (k == 4 || q.x < 0 || q.y < 0 || q.x >= int(frame.width) || q.y >= int(frame.bandRows)) continue;
+    uint neighbourId = edgeIds[uint(q.y) * frame.width + uint(q.x)].x;
+    if (neighbourId == centreId) continue;
+    for (uint c = 0u; c < 2u; ++c) {
+      uint candidate = c == 0u ? centreId : neighbourId;
+      if (edgeKind(candidate) == HIT_NONE) continue;
+      float g0 = coverGap(candidate, o, film), g1 = coverGap(candidate, o, film + vec2(step));
+      if ((g0 < 0.0) == (g1 < 0.0)) continue;
+      float at = g0 / (g0 - g1) * length(vec2(step));
+      if (at < nearest) {
+        nearest = at;
+        edgeId = candidate;
+      }
+    }
+  }
+  return nearest < 2.0;
+}
+
+// The share of the pixel square on the centre's side of the edge of `id`, and a film position in
+// the middle of each side's part (along the edge's normal through the centre).
+float edgeSplit(uint id, vec3 o, vec2 film, out vec2 centreSide, out vec2 farSide) {
+  float g = coverGap(id, o, film);
+  vec2 gradient = coverGapGradient(id, o, film);
+  float len = max(length(gradient), 1.0e-20);
+  vec2 n = (g < 0.0 ? gradient : -gradient) / len;  // from the centre's side towards the other
+  float distance = abs(g) / len;
+  float reach = 0.5 * (abs(n.x) + abs(n.y));  // the square's extent along n
+  centreSide = film + n * (0.5 * (min(distance, reach) - reach));
+  farSide = film + n * (0.5 * (min(distance, reach) + reach));
+  float below = shareBelow(g, gradient);
+  return g < 0.0 ? below : 1.0 - below;
+}
+
+// The sample being shaded: its surface steps of one pixel (set by albedoAt) and its sphere
+// (set by radiance; none on a plane), which cannot shadow its own lit side.
+vec3 shadeDpdx = vec3(0.0), shadeDpdy = vec3(0.0);
+uint shadeSelf = 0xFFFFFFFFu;
+
+// Distance from the sphere (centre, radius) to the segment from q to `target`: negative where
+// the segment passes through it.
+float segmentGap(vec3 q, vec3 target, vec4 cr) {
+  vec3 d = target - q;
+  float t = clamp(dot(cr.xyz - q, d) / dot(d, d), 0.0, 1.0);
+  return length(cr.xyz - (q + t * d)) - cr.w;
+}
+
+// The share of the sample's footprint (shadeDpdx, shadeDpdy around o) from which the light at
+// o + l * dist is visible: each sphere other than `self` blocks the share where its segment gap
+// is negative (linearised over the footprint), the shares multiplied; a plane across the centre's
+// segment blocks all of it. Scenes that walk a sphere tree keep the centre's answer.
+// `passes`: as occluded's.
+float litShare(vec3 o, vec3 l, float dist, uint light, out uint passes) {
+  if (SPHERE_TREE != SPHERE_TREE_NONE) return occluded(o, l, dist, light, passes) ? 0.0 : 1.0;
+  passes = 1u + planeCount();
+  for (uint i = 0u; i < planeCount(); ++i)
+    if (intersectPlane(o, l, planeAt(i).normalDistance, 0.0, dist) > 0.0) return 0.0;
+  vec3 target = o + l * dist;
+  float lit = 1.0;
+  for (uint i = 0u; i < sphereCount(); ++i) {
+    if (i == shadeSelf) continue;
+    vec4 cr = sphereAt(i).centerRadius;
+    float g = segmentGap(o, target, cr);
+    vec2 gradient = vec2(segmentGap(o + 0.5 * shadeDpdx, target, cr) - segmentGap(o - 0.5 * shadeDpdx, target, cr),
+                         segmentGap(o + 0.5 * shadeDpdy, target, cr) - segmentGap(o - 0.5 * shadeDpdy, target, cr));
+    lit *= 1.0 - shareBelow(g, gradient);
+  }
+  return lit;
+}
+
+#endif  // RAYTEX_COVERAGE_GLSL
