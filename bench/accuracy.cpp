@@ -67,7 +67,7 @@ int main(int argc, char** argv) {
       for (const Method& m : methods) {
         for (uint32_t side : sides) {
           KernelOptions kernel;
-          kernel.filterBox = m.filter == FILTER_BOX;
+          kernel.textureFilter = m.filter;
           kernel.samplesPerSide = side;
           preparePipeline(r, kernelKey(g, kernel));
           renderFrame(r);  // warm-up: lavapipe compiles at the first dispatch

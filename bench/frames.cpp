@@ -39,7 +39,7 @@ int main(int argc, char** argv) {
     r.accumulate = progressive;
     uploadScene(r, scene);
     KernelOptions kernel;
-    kernel.filterBox = filter == FILTER_BOX;
+    kernel.textureFilter = filter;
     kernel.samplesPerSide = side;
     kernel.bakeValues = baked;
     kernel.progressive = progressive;

@@ -31,7 +31,7 @@ int main(int argc, char** argv) {
     printf("%s %ux%u, median of %d warm frames\n", args.scene.c_str(), width, height, runs);
     for (const Method& m : methods) {
       KernelOptions kernel;
-      kernel.filterBox = m.filter == FILTER_BOX;
+      kernel.textureFilter = m.filter;
       kernel.samplesPerSide = m.samplesPerSide;
       preparePipeline(r, kernelKey(g, kernel));
       renderFrame(r);  // warm-up: lavapipe compiles at the first dispatch
