@@ -1,7 +1,6 @@
 #include "pipeline.h"
 
 #include "common.h"
-#include "edges_spv.h"
 // Generated at build time by glslangValidator --vn (CMakeLists.txt, add_spirv).
 #include "trace_aov_box_spv.h"
 #include "trace_aov_box_tree_spv.h"
@@ -51,7 +50,6 @@ VkDescriptorSetLayout createTraceSetLayout(const Device& device) {
       binding(BINDING_TILE_SPHERES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER),
       binding(BINDING_TILE_ORDER, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC),
       binding(BINDING_AOV, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER),
-      binding(BINDING_EDGE_IDS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER),
       binding(BINDING_EDGE_LIST, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER),
   };
   VkDescriptorSetLayoutCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
@@ -149,8 +147,4 @@ VkPipeline createTracePipeline(const Device& device, VkPipelineLayout layout, co
   // warmPipeline dispatches past the image: the base needs VK_PIPELINE_CREATE_DISPATCH_BASE_BIT.
   return createComputePipeline(device, layout, variant.code, variant.bytes, &specialization,
                                VK_PIPELINE_CREATE_DISPATCH_BASE_BIT);
-}
-
-VkPipeline createEdgeListPipeline(const Device& device, VkPipelineLayout layout) {
-  return createComputePipeline(device, layout, edges_spv, sizeof(edges_spv), nullptr, 0);
 }

@@ -11,9 +11,6 @@ VkDescriptorSetLayout createTraceSetLayout(const Device& device);
 
 VkPipeline createTracePipeline(const Device& device, VkPipelineLayout layout, const KernelKey& key);
 
-// FILTER_COVERAGE's edge classification (shaders/edges.comp.glsl), in the trace pipelines' layout.
-VkPipeline createEdgeListPipeline(const Device& device, VkPipelineLayout layout);
-
 // A compute pipeline from SPIR-V (`bytes` long), entry point main; the module is destroyed
 // once the pipeline exists. Throws VulkanError.
 VkPipeline createComputePipeline(const Device& device, VkPipelineLayout layout, const uint32_t* code, size_t bytes,

@@ -25,12 +25,12 @@ void writeDescriptors(Renderer& r) {
       bufferInfo(r.lights),       bufferInfo(r.noise),   bufferInfo(r.accumulation), bufferInfo(r.pixels),
       bufferInfo(r.tree),         bufferInfo(r.treeStorage), bufferInfo(r.sphereStorage), bufferInfo(r.status),
       bufferInfo(r.tileRanges),   bufferInfo(r.tileSpheres), {r.tileOrder.buffer, 0, 4 * TILE_ORDER_CHUNK},
-      bufferInfo(r.passes),       bufferInfo(r.edgeIds), bufferInfo(r.edgeList)};
+      bufferInfo(r.passes),       bufferInfo(r.edgeList)};
   const uint32_t bufferBindings[] = {BINDING_FRAME,  BINDING_SPHERES, BINDING_PLANES,       BINDING_MATERIALS,
                                      BINDING_LIGHTS, BINDING_NOISE,   BINDING_ACCUMULATION, BINDING_OUTPUT,
                                      BINDING_TREE,   BINDING_TREE_STORAGE, BINDING_SPHERE_STORAGE, BINDING_STATUS,
                                      BINDING_TILE_RANGES, BINDING_TILE_SPHERES, BINDING_TILE_ORDER, BINDING_AOV,
-                                     BINDING_EDGE_IDS, BINDING_EDGE_LIST};
+                                     BINDING_EDGE_LIST};
 
   std::vector<VkWriteDescriptorSet> writes;
   auto write = [&](uint32_t binding, VkDescriptorType type) {
@@ -51,7 +51,7 @@ void writeDescriptors(Renderer& r) {
     const uint32_t b = bufferBindings[i];
     bool uniform = b != BINDING_ACCUMULATION && b != BINDING_OUTPUT && b != BINDING_TREE_STORAGE &&
                    b != BINDING_SPHERE_STORAGE && b != BINDING_STATUS && b != BINDING_TILE_RANGES &&
-                   b != BINDING_TILE_SPHERES && b != BINDING_AOV && b != BINDING_EDGE_IDS && b != BINDING_EDGE_LIST;
+                   b != BINDING_TILE_SPHERES && b != BINDING_AOV && b != BINDING_EDGE_LIST;
     const VkDescriptorType type = b == BINDING_TILE_ORDER ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC
                                   : uniform               ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER
                                                           : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
@@ -145,13 +145,10 @@ VkDeviceSize accumulationBytes(const Renderer& r, uint32_t width, uint32_t heigh
 // Planes of the pass buffer (BINDING_AOV): one per requested pass.
 uint32_t passPlanes(const Renderer& r) { return uint32_t(std::bitset<AOV_COUNT>(r.passMask).count()); }
 
-// The coverage filter's buffers for bands of `rows` rows: an EDGE_ID and shadow signature per
-// pixel, and the edge list's header and a pixel index per pixel; placeholders without.
-VkDeviceSize edgeIdBytes(const Renderer& r, uint32_t width, uint32_t rows) {
-  return r.coverage ? VkDeviceSize(width) * rows * 8 : 16;
-}
+// The coverage filter's list for bands of `rows` rows: its header and an entry per pixel at
+// most; a placeholder without.
 VkDeviceSize edgeListBytes(const Renderer& r, uint32_t width, uint32_t rows) {
-  return r.coverage ? 16 + VkDeviceSize(width) * rows * 4 : 16;
+  return r.coverage ? 16 + VkDeviceSize(width) * rows * 8 : 16;
 }
 
 // The pass buffer for bands of `rows` rows; a placeholder without passes (the binding exists).
@@ -177,8 +174,7 @@ uint32_t outputRows(const Renderer& r, uint32_t width, uint32_t height) {
   const VkDeviceSize passes = passBytes(r, width, std::max(rows, 1u));
   const VkDeviceSize buffer = std::max(output, passes);
   const VkDeviceSize total = (r.accumulate ? 2 * output + VkDeviceSize(width) * height * 4 : output) +
-                             (passPlanes(r) ? passes : 0) + edgeIdBytes(r, width, std::max(rows, 1u)) +
-                             edgeListBytes(r, width, std::max(rows, 1u));
+                             (passPlanes(r) ? passes : 0) + edgeListBytes(r, width, std::max(rows, 1u));
   const std::string size = std::to_string(width) + "x" + std::to_string(height);
   const VkDeviceSize range = r.device.properties.limits.maxStorageBufferRange;
   if (buffer > range)
@@ -213,9 +209,7 @@ void createOutput(Renderer& r, uint32_t width, uint32_t height) {
   r.pixels = createBuffer(r.device, VkDeviceSize(width) * r.bandRows * 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
   destroyBuffer(r.device, r.passes);
   r.passes = createBuffer(r.device, passBytes(r, width, r.bandRows), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-  destroyBuffer(r.device, r.edgeIds);
   destroyBuffer(r.device, r.edgeList);
-  r.edgeIds = createBuffer(r.device, edgeIdBytes(r, width, r.bandRows), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
   r.edgeList = createBuffer(r.device, edgeListBytes(r, width, r.bandRows),
                             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT |
                                 VK_BUFFER_USAGE_TRANSFER_DST_BIT);
@@ -264,7 +258,7 @@ void createDescriptorSet(Renderer& r) {
   const VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1},
                                         {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 7},
                                         {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, 1},
-                                        {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 10},
+                                        {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 9},
                                         {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, MAX_IMAGES}};
   VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
   poolInfo.maxSets = 1;
@@ -323,7 +317,6 @@ void createRenderer(Renderer& r, const DeviceOptions& options) {
   createDescriptorSet(r);
   createSampler(r);
   createTimestamps(r);
-  r.edgeListPipeline = createEdgeListPipeline(r.device, r.pipelineLayout);
 }
 
 void destroyRenderer(Renderer& r) {
@@ -331,10 +324,9 @@ void destroyRenderer(Renderer& r) {
     VkDevice d = r.device.device;
     vkDeviceWaitIdle(d);
     for (CachedPipeline& p : r.pipelines) vkDestroyPipeline(d, p.pipeline, nullptr);
-    if (r.edgeListPipeline) vkDestroyPipeline(d, r.edgeListPipeline, nullptr);
     for (Buffer* b : {&r.frame, &r.spheres, &r.planes, &r.materials, &r.lights, &r.noise, &r.pixels,
                       &r.accumulation, &r.tree, &r.treeStorage, &r.sphereStorage, &r.status, &r.tileRanges,
-                      &r.tileSpheres, &r.tileOrder, &r.passes, &r.edgeIds, &r.edgeList})
+                      &r.tileSpheres, &r.tileOrder, &r.passes, &r.edgeList})
       destroyBuffer(r.device, *b);
     destroyImage(r.device, r.display);
     destroyImages(r);
@@ -374,7 +366,7 @@ void uploadScene(Renderer& r, const GpuScene& s) {
 
   bool accumulationFits = r.accumulation.size == accumulationBytes(r, r.width, r.height);
   bool passesFit = r.passes.size == passBytes(r, r.width, r.bandRows);
-  bool edgesFit = r.edgeIds.size == edgeIdBytes(r, r.width, r.bandRows);
+  bool edgesFit = r.edgeList.size == edgeListBytes(r, r.width, r.bandRows);
   if (s.frame.width != r.width || s.frame.height != r.height || !r.pixels.buffer || !accumulationFits || !passesFit ||
       !edgesFit)
     createOutput(r, s.frame.width, s.frame.height);
@@ -457,7 +449,7 @@ void computeBarrier(VkCommandBuffer cmd, VkAccessFlags access, VkPipelineStageFl
 }
 
 // Before the main kernel of FILTER_COVERAGE: an empty edge list (an indirect dispatch of no
-// workgroups).
+// workgroups), which the main kernel fills.
 void clearEdgeList(Renderer& r, VkCommandBuffer cmd) {
   const uint32_t header[4] = {0, 1, 1, 0};
   vkCmdUpdateBuffer(cmd, r.edgeList.buffer, 0, sizeof(header), header);
@@ -468,15 +460,14 @@ void clearEdgeList(Renderer& r, VkCommandBuffer cmd) {
                        nullptr, 0, nullptr);
 }
 
-// After the main kernel of FILTER_COVERAGE: the classification lists the band's edge pixels,
-// then the edge pass shades them again, one invocation each (an indirect dispatch).
+// After the main kernel of FILTER_COVERAGE: the edge pass shades the listed pixels again, one
+// invocation each (an indirect dispatch).
 void recordEdgePass(Renderer& r, VkCommandBuffer cmd) {
-  computeBarrier(cmd, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
-  const uint32_t blockX = WORKGROUP_X * EDGE_BLOCK, blockY = WORKGROUP_Y * EDGE_BLOCK;
-  bindAndDispatch(r, cmd, r.edgeListPipeline, 0, (r.width + blockX - 1) / blockX, (bandHeight(r) + blockY - 1) / blockY);
   computeBarrier(cmd, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_INDIRECT_COMMAND_READ_BIT,
                  VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT);
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, r.edgePipeline);
+  uint32_t noOffset = 0;
+  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, r.pipelineLayout, 0, 1, &r.descriptorSet, 1, &noOffset);
   vkCmdDispatchIndirect(cmd, r.edgeList.buffer, 0);
 }
 

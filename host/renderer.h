@@ -65,13 +65,11 @@ struct Renderer {
   // BINDING_AOV: per pass in passMask, in bit order, a plane of width * bandHeight vec4s (16 bytes
   // without passes). With passes the band height is chosen so that all the planes fit one buffer.
   Buffer passes;
-  // FILTER_COVERAGE (shaders/coverage.glsl), set before uploadScene, which sizes the buffers:
-  // per pixel of the band what its centre sees (BINDING_EDGE_IDS), the list of edge pixels
-  // (BINDING_EDGE_LIST), 16-byte placeholders without; the classification's pipeline, and the
-  // edge pass of the current key (from `pipelines`; none unless it is FILTER_COVERAGE).
+  // FILTER_COVERAGE (shaders/coverage.glsl), set before uploadScene, which sizes the list of
+  // edge pixels (BINDING_EDGE_LIST; a 16-byte placeholder without); the edge pass of the current
+  // key (from `pipelines`; none unless it is FILTER_COVERAGE).
   bool coverage = false;
-  Buffer edgeIds, edgeList;
-  VkPipeline edgeListPipeline = VK_NULL_HANDLE;
+  Buffer edgeList;
   VkPipeline edgePipeline = VK_NULL_HANDLE;
   KernelKey edgeKey;
   Buffer accumulation;  // progressive sums, width * height * 4 floats when `accumulate`
@@ -128,7 +126,7 @@ void selectBand(Renderer& renderer, uint32_t firstRow);
 uint32_t bandHeight(const Renderer& renderer);
 
 // Dispatches the kernel over the selected band (the whole image when it is one), and for
-// FILTER_COVERAGE the edge classification and the edge pass after it; waits. Sets lastFrameMs
+// FILTER_COVERAGE the edge pass after it; waits. Sets lastFrameMs
 // (all of them). Throws LoopBudgetError if a group of pixels passed the loop budget (lavapipe).
 void renderFrame(Renderer& renderer);
 

@@ -64,14 +64,15 @@ using uvec4 = glm::uvec4;
 // The passes (SPEC_PASS_MASK, the AOV_* below): per requested pass, in bit order, a plane of
 // width * bandRows vec4s (the band's rows, as BINDING_OUTPUT); a 16-byte placeholder without.
 #define BINDING_AOV 17  // storage vec4[]
-// The coverage filter (FILTER_COVERAGE, shaders/coverage.glsl): the main kernel writes per pixel
-// what its centre sees; the edge classification lists the pixels whose neighbours see something
-// else; the edge pass shades those again. 16-byte placeholders without it.
-#define BINDING_EDGE_IDS 18   // storage uvec2[width * bandRows]: (EDGE_ID of the hit, shadow signature)
-#define BINDING_EDGE_LIST 19  // storage: uvec4 (workgroups x, y, z of the edge pass; count), uint pixels[]
+// The coverage filter (FILTER_COVERAGE): the main kernel lists the pixels an edge may cross
+// (shaders/edge_flags.glsl), the edge pass shades those again (shaders/coverage.glsl). Storage:
+// uvec4 (workgroups x, y, z of the edge pass, an indirect dispatch; the count), then per listed
+// pixel uvec2 (its index in the band; the EDGE_ID of its edge's object, or EDGE_NONE for a
+// shadow's edge alone); a 16-byte placeholder without the filter.
+#define BINDING_EDGE_LIST 18
 #define EDGE_GROUP_SIZE 64u   // edge pixels per workgroup of the edge pass (WORKGROUP_X * WORKGROUP_Y)
-#define EDGE_BLOCK 4          // pixels per side of the block one invocation of the classification lists
 #define EDGE_KIND_SHIFT 30u   // EDGE_ID: HIT_* << EDGE_KIND_SHIFT | the object's index
+#define EDGE_NONE 0xFFFFFFFFu
 #define MAX_TILE_KERNELS 4u
 #define TILE_ORDER_CHUNK 16384u  // tiles one dispatch renders at most: 64 KiB of words
 #define TILE_ORDER_NONE 0xFFFFFFFFu
@@ -169,7 +170,7 @@ using uvec4 = glm::uvec4;
 #define SPEC_TILE_ORDER 15   // 1: workgroups render the tiles of BINDING_TILE_ORDER (tile kernels)
 #define SPEC_SHADOW_LISTS 16 // 1: shadow rays test their cell's and light's spheres (BINDING_TILE_*)
 #define SPEC_PASS_MASK 17    // bit (1 << AOV_*) per pass written to BINDING_AOV (the RAYTEX_AOV modules)
-#define SPEC_TEXTURE_FILTER 18  // FILTER_*: FILTER_COVERAGE makes the box kernel write BINDING_EDGE_IDS
+#define SPEC_TEXTURE_FILTER 18  // FILTER_*: FILTER_COVERAGE makes the box kernel list edge pixels
 
 // Scenes with at most this many spheres, planes or lights get kernels with the count
 // built in (the loops over them unrolled); larger ones loop to Frame's count. On lavapipe a

@@ -1,6 +1,6 @@
-// The coverage filter (FILTER_COVERAGE): analytic edge coverage at one ray per pixel, after
-// Amanatides' cones ("Ray tracing with cones", SIGGRAPH 1984). Raytex renders analytic spheres
-// and planes only, so the edges that cross a pixel have closed forms:
+// The coverage filter's edge pass (FILTER_COVERAGE): analytic edge coverage at one ray per
+// pixel, after Amanatides' cones ("Ray tracing with cones", SIGGRAPH 1984). Raytex renders
+// analytic spheres and planes only, so the edges that cross a pixel have closed forms:
 // - a sphere's silhouette: the distance of the sphere's centre from the primary ray's line
 //   minus the radius (coverGap);
 // - a plane's horizon: where the primary ray turns parallel to the plane, a straight line on the
@@ -9,18 +9,17 @@
 //   surface point to the light, minus the radius, over the pixel's footprint on the surface
 //   (litShare).
 // Each such gap g is negative on the covered (or shadowed) side; linearised over the pixel, the
-// share of the pixel square on that side is shareBelow(g, gradient). The main (box) kernel writes
-// what each pixel's centre sees (BINDING_EDGE_IDS); the classification (edges.comp.glsl) lists
-// the pixels a neighbour of which sees something else; this edge pass shades them again: the
-// surface at the centre's side and the one across the nearest edge, each at the middle of its
-// part of the pixel, mixed by their shares, with every light weighted by its lit share. Textures
-// keep the box filter. Approximations (docs/accuracy.md, "The coverage filter"): two surfaces per
-// pixel (the edge nearest the centre), straight edges within a pixel, the occluders' shares
-// multiplied as if independent, shadows of planes and the edges where two surfaces cut each other
-// not covered.
+// share of the pixel square on that side is shareBelow(g, gradient). The main kernel lists the
+// pixels an edge may cross with the edge's object (edge_flags.glsl); this pass shades each
+// again: the surface on the centre's side of the edge and the one across it, each at the middle
+// of its part of the pixel, mixed by their shares, with every light weighted by its lit share.
+// Textures keep the box filter. Approximations (docs/accuracy.md, "The coverage filter"): two
+// surfaces per pixel (the edge nearest the centre), straight edges within a pixel, the
+// occluders' shares multiplied as if independent; shadows of planes, and the edges where two
+// surfaces cut each other, not covered.
 //
-// Needs (declared by the including kernel): edgeIds, frame, sphereAt, planeAt, sphereCount,
-// planeCount, primaryRayUnnormalized, intersectPlane, occluded.
+// Needs (declared by the including kernel): frame, sphereAt, planeAt, sphereCount, planeCount,
+// primaryRayUnnormalized, intersectPlane, occluded.
 #ifndef RAYTEX_COVERAGE_GLSL
 #define RAYTEX_COVERAGE_GLSL
 
@@ -66,34 +65,6 @@ float coverGap(uint id, vec3 o, vec2 film) {
 vec2 coverGapGradient(uint id, vec3 o, vec2 film) {
   return vec2(coverGap(id, o, film + vec2(0.5, 0.0)) - coverGap(id, o, film - vec2(0.5, 0.0)),
               coverGap(id, o, film + vec2(0.0, 0.5)) - coverGap(id, o, film - vec2(0.0, 0.5)));
-}
-
-// The object whose edge lies nearest the centre `film` of `pixel`, along the segments to the
-// neighbours whose centres see another object: for each such neighbour, the centre's object and
-// the neighbour's are the candidates, and an edge counts where its gap changes sign on the
-// segment. False where no candidate's does (two surfaces that cut each other).
-bool nearestEdge(vec3 o, vec2 film, uvec2 pixel, uint centreId, out uint edgeId) {
-  float nearest = 2.0;
-  edgeId = centreId;
-  for (int k = 0; k < 9; ++k) {
-    ivec2 step = ivec2(k % 3 - 1, k / 3 - 1);
-    ivec2 q = ivec2(pixel) + step - ivec2(0, frame.rowOffset);
-    if (k == 4 || q.x < 0 || q.y < 0 || q.x >= int(frame.width) || q.y >= int(frame.bandRows)) continue;
-    uint neighbourId = edgeIds[uint(q.y) * frame.width + uint(q.x)].x;
-    if (neighbourId == centreId) continue;
-    for (uint c = 0u; c < 2u; ++c) {
-      uint candidate = c == 0u ? centreId : neighbourId;
-      if (edgeKind(candidate) == HIT_NONE) continue;
-      float g0 = coverGap(candidate, o, film), g1 = coverGap(candidate, o, film + vec2(step));
-      if ((g0 < 0.0) == (g1 < 0.0)) continue;
-      float at = g0 / (g0 - g1) * length(vec2(step));
-      if (at < nearest) {
-        nearest = at;
-        edgeId = candidate;
-      }
-    }
-  }
-  return nearest < 2.0;
 }
 
 // The share of the pixel square on the centre's side of the edge of `id`, and a film position in

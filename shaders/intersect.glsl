@@ -35,6 +35,8 @@ float intersectPlane(vec3 o, vec3 dir, vec4 normalDistance, float tMin, float tM
   return (t > tMin && t < tMax) ? t : -1.0;
 }
 
+#include "edge_flags.glsl"
+
 // The tree's walks and the tile and shadow lists, only in the modules for scenes with a tree
 // (RAYTEX_SPHERE_TREE, CMakeLists.txt): the driver processes a module's every function before
 // the specialisation constants drop what a scene lacks.
@@ -49,13 +51,17 @@ Hit closestHit(vec3 o, vec3 d) {
   Hit hit = Hit(T_MAX, HIT_NONE, 0u);
   if (SPHERE_TREE == SPHERE_TREE_NONE) {
     for (uint i = 0u; i < sphereCount(); ++i) {
-      float t = intersectSphere(o, d, sphereAt(i).centerRadius, 0.0, hit.t);
+      vec4 centerRadius = sphereAt(i).centerRadius;
+      notePrimarySphere(o, d, centerRadius, i, hit.t);
+      float t = intersectSphere(o, d, centerRadius, 0.0, hit.t);
       if (t > 0.0) hit = Hit(t, HIT_SPHERE, i);
     }
     if (SPHERE_COUNT == COUNT_FROM_FRAME) countLoop(sphereCount());
   }
   for (uint i = 0u; i < planeCount(); ++i) {
-    float t = intersectPlane(o, d, planeAt(i).normalDistance, 0.0, hit.t);
+    vec4 normalDistance = planeAt(i).normalDistance;
+    notePrimaryPlane(d, normalDistance, i);
+    float t = intersectPlane(o, d, normalDistance, 0.0, hit.t);
     if (t > 0.0) hit = Hit(t, HIT_PLANE, i);
   }
   if (PLANE_COUNT == COUNT_FROM_FRAME) countLoop(planeCount());
@@ -76,7 +82,9 @@ bool occluded(vec3 o, vec3 d, float tMax, uint light, out uint passes) {
   passes = 1u;  // a masked pass of the second loop (countLoop adds one)
   for (uint i = 0u; SPHERE_TREE == SPHERE_TREE_NONE && i < sphereCount(); ++i) {
     ++passes;
-    if (intersectSphere(o, d, sphereAt(i).centerRadius, 0.0, tMax) > 0.0) return true;
+    vec4 centerRadius = sphereAt(i).centerRadius;
+    noteShadowSphere(o, d, centerRadius);
+    if (intersectSphere(o, d, centerRadius, 0.0, tMax) > 0.0) return true;
   }
   for (uint i = 0u; i < planeCount(); ++i) {
     ++passes;

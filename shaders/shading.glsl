@@ -59,16 +59,15 @@ vec3 offsetOrigin(vec3 p, vec3 n) {
 }
 
 // How much of light `light` reaches the sample from o along unit l (dist away): 1 or 0 from one
-// shadow ray (noted for the coverage filter's edge classification), or, in the coverage
-// filter's edge pass, the lit share of the sample's footprint (coverage.glsl). `passes`: as
-// occluded's.
+// shadow ray (measured against the spheres' edges for the coverage filter: edge_flags.glsl), or,
+// in the coverage filter's edge pass, the lit share of the sample's footprint (coverage.glsl).
+// `passes`: as occluded's.
 float visibleShare(vec3 o, vec3 l, float dist, uint light, out uint passes) {
 #ifdef RAYTEX_EDGE_PASS
   return litShare(o, l, dist, light, passes);
 #else
-  if (!occluded(o, l, dist, light, passes)) return 1.0;
-  noteShadow(light);
-  return 0.0;
+  shadowLength = dist;
+  return occluded(o, l, dist, light, passes) ? 0.0 : 1.0;
 #endif
 }
 

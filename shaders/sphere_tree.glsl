@@ -41,7 +41,9 @@ void closestSphereInTree(vec3 o, vec3 d, inout Hit hit) {
       uint first = leafFirst(n);
       for (uint k = 0u; k < TREE_LEAF_SIZE; ++k) {
         if (k < count) {
-          float t = intersectSphere(o, d, sphereAt(first + k).centerRadius, 0.0, hit.t);
+          vec4 centerRadius = sphereAt(first + k).centerRadius;
+          notePrimarySphere(o, d, centerRadius, first + k, hit.t);
+          float t = intersectSphere(o, d, centerRadius, 0.0, hit.t);
           if (t > 0.0) hit = Hit(t, HIT_SPHERE, first + k);
         }
       }
@@ -64,8 +66,13 @@ bool occludedInTree(vec3 o, vec3 d, float tMax) {
     uint count = leafCount(n);
     if (enters && count > 0u) {
       uint first = leafFirst(n);
-      for (uint k = 0u; k < TREE_LEAF_SIZE; ++k)
-        if (k < count && intersectSphere(o, d, sphereAt(first + k).centerRadius, 0.0, tMax) > 0.0) blocked = true;
+      for (uint k = 0u; k < TREE_LEAF_SIZE; ++k) {
+        if (k < count) {
+          vec4 centerRadius = sphereAt(first + k).centerRadius;
+          noteShadowSphere(o, d, centerRadius);
+          if (intersectSphere(o, d, centerRadius, 0.0, tMax) > 0.0) blocked = true;
+        }
+      }
     }
     node = blocked ? frame.treeNodeCount : (enters && count == 0u ? node + 1u : n.next);
   } while (node < frame.treeNodeCount);
@@ -91,6 +98,7 @@ void closestSphereInTile(vec3 o, vec3 d, inout Hit hit) {
     uint i = tileSpheres[first + k];
     vec4 centerRadius = sphereAt(i).centerRadius;
     if (length(centerRadius.xyz - o) - centerRadius.w > hit.t * (1.0 + 1.0 / 1024.0)) break;
+    notePrimarySphere(o, d, centerRadius, i, hit.t);
     float t = intersectSphere(o, d, centerRadius, 0.0, hit.t);
     if (t > 0.0) hit = Hit(t, HIT_SPHERE, i);
   }
@@ -124,7 +132,9 @@ bool occludedInList(uint first, uint count, vec3 o, vec3 d, float tMax) {
   bool blocked = false;
   for (uint k = 0u; k < count; ++k) {
     ++passes;
-    if (intersectSphere(o, d, sphereAt(tileSpheres[first + k]).centerRadius, 0.0, tMax) > 0.0) {
+    vec4 centerRadius = sphereAt(tileSpheres[first + k]).centerRadius;
+    noteShadowSphere(o, d, centerRadius);
+    if (intersectSphere(o, d, centerRadius, 0.0, tMax) > 0.0) {
       blocked = true;
       break;
     }

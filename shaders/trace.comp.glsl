@@ -42,9 +42,13 @@ layout(constant_id = SPEC_SHADOW_LISTS) const bool SHADOW_LISTS = false;
 #ifdef RAYTEX_AOV
 layout(constant_id = SPEC_PASS_MASK) const uint PASS_MASK = 0u;
 #endif
-// FILTER_COVERAGE: the box kernel also writes what each pixel's centre sees (BINDING_EDGE_IDS).
+// FILTER_COVERAGE: the box kernel also lists the pixels an edge may cross (edge_flags.glsl).
 layout(constant_id = SPEC_TEXTURE_FILTER) const uint TEXTURE_FILTER = FILTER_POINT;
-const bool EDGE_IDS = TEXTURE_FILTER == FILTER_COVERAGE;
+#ifdef RAYTEX_EDGE_PASS
+const bool EDGE_FLAGS = false;
+#else
+const bool EDGE_FLAGS = TEXTURE_FILTER == FILTER_COVERAGE;
+#endif
 
 layout(std430, binding = BINDING_OUTPUT) writeonly buffer OutputBlock { vec4 outputPixels[]; };
 layout(std140, binding = BINDING_FRAME) uniform FrameBlock { Frame frameBlock; };
@@ -63,13 +67,10 @@ layout(std430, binding = BINDING_STATUS) buffer StatusBlock { uint status[STATUS
 layout(std430, binding = BINDING_TILE_RANGES) readonly buffer TileRanges { uint tileRanges[]; };
 layout(std430, binding = BINDING_TILE_SPHERES) readonly buffer TileSpheres { uint tileSpheres[]; };
 layout(std140, binding = BINDING_TILE_ORDER) uniform TileOrderBlock { uvec4 tileOrder[TILE_ORDER_CHUNK / 4u]; };
-layout(std430, binding = BINDING_EDGE_IDS) buffer EdgeIdBlock { uvec2 edgeIds[]; };
-#ifdef RAYTEX_EDGE_PASS
-layout(std430, binding = BINDING_EDGE_LIST) readonly buffer EdgeListBlock {
+layout(std430, binding = BINDING_EDGE_LIST) buffer EdgeListBlock {
   uvec4 edgeHeader;
-  uint edgePixels[];
+  uvec2 edgeEntries[];
 };
-#endif
 
 #include "baked.glsl"
 
@@ -154,19 +155,11 @@ const bool SPHERE_LAT_LONG = ((SPHERE_TEXTURE_KINDS & TEX_2D_KINDS) | (PASS_MASK
 const bool SPHERE_LAT_LONG = ((SPHERE_TEXTURE_KINDS & TEX_2D_KINDS) | uint(OUTPUT_MODE == OUTPUT_COORDS)) != 0u;
 #endif
 
-// What the sample's primary ray hit (EDGE_ID) and a sum of a hash per light its shadow rays
-// found blocked: the pixel's entry in BINDING_EDGE_IDS (EDGE_IDS).
-uint edgeHit = 0u;
-uint edgeShadow = 0u;
-void noteShadow(uint light) {
-  if (EDGE_IDS) edgeShadow += (light + 1u) * 0x9E3779B9u;
-}
-
 #include "noise.glsl"
 #include "loop_budget.glsl"
 #include "mapping.glsl"
-#include "intersect.glsl"
 #include "camera.glsl"
+#include "intersect.glsl"
 #ifdef RAYTEX_EDGE_PASS
 #include "coverage.glsl"
 #endif
@@ -193,6 +186,7 @@ vec3 albedoAt(Hit hit, Surface s, Material m, vec3 origin, vec2 film, float spac
   shadeDpdx = dpdx;
   shadeDpdy = dpdy;
 #endif
+  if (EDGE_FLAGS) shadowRadius = 0.5 * (length(dpdx) + length(dpdy));
 #ifdef RAYTEX_AOV
   keepFootprintPass(readsSolidCoord(m.textureKind) ? vec2(length(fp.dsdx), length(fp.dsdy))
                                                    : vec2(length(fp.duvdx), length(fp.duvdy)));
@@ -232,8 +226,9 @@ vec3 albedoAt(Hit hit, Surface s, Material m, vec3 origin, vec2 film, float spac
 // Linear radiance of the sample at `film` (pixel units); `spacing` between samples.
 vec3 radiance(vec3 origin, vec2 film, float spacing) {
   vec3 dir = primaryRay(film);
+  startEdgeFlags(film);
   Hit hit = closestHit(origin, dir);
-  edgeHit = hit.kind << EDGE_KIND_SHIFT | (hit.kind == HIT_NONE ? 0u : hit.index);
+  endPrimaryEdges(hit);
   if (hit.kind == HIT_NONE) return frame.background.rgb;
   Surface s = surfaceAt(hit, origin, dir);
   Material m = materialAt(s.material);
@@ -286,6 +281,14 @@ vec4 debugOutput(vec3 origin, vec2 film) {
 }
 #endif
 
+// Appends the pixel (its index in the band) and its edge object to the coverage filter's list,
+// growing the edge pass's indirect dispatch to cover it.
+void listEdgePixel(uint outputIndex) {
+  uint slot = atomicAdd(edgeHeader.w, 1u);
+  edgeEntries[slot] = uvec2(outputIndex, edgeObject);
+  atomicMax(edgeHeader.x, slot / EDGE_GROUP_SIZE + 1u);
+}
+
 // A linear colour as the window shows it: sRGB-encoded 8-bit channels packed in the
 // swapchain's byte order, so that the viewer can copy the image into the swapchain as it is.
 uint displayPixel(vec3 linear) {
@@ -309,25 +312,23 @@ uvec2 invocationPixel() {
 
 #ifdef RAYTEX_EDGE_PASS
 // The coverage filter's edge pass: invocation i of the indirect dispatch shades listed pixel i
-// again (coverage.glsl): the centre's side of the nearest edge and the far side, each at the
-// middle of its part, mixed by their shares. Invocations past the list's end shade its last
-// pixel and store nothing.
+// again (coverage.glsl): the centre's side of its edge and the far side, each at the middle of
+// its part, mixed by their shares; a pixel listed for a shadow's edge alone, at its centre.
+// Invocations past the list's end shade its last pixel and store nothing.
 void main() {
   cacheScene();
   uint slot = gl_WorkGroupID.x * EDGE_GROUP_SIZE + gl_LocalInvocationIndex;
   uint count = edgeHeader.w;
   bool inside = slot < count;
-  uint outputIndex = edgePixels[min(slot, count - 1u)];
+  uvec2 entry = edgeEntries[min(slot, count - 1u)];
+  uint outputIndex = entry.x;
   uvec2 pixel = uvec2(outputIndex % frame.width, outputIndex / frame.width + frame.rowOffset);
   primaryTile = (pixel.y / TILE_SIZE) * frame.tileColumns + pixel.x / TILE_SIZE;
   shadowCell = (pixel.y / (TILE_SIZE * SHADOW_CELL)) * frame.shadowColumns + pixel.x / (TILE_SIZE * SHADOW_CELL);
   vec3 origin = frame.eye.xyz;
   vec2 film = vec2(pixel) + 0.5;
   vec2 centreSide = film, farSide = film;
-  uint edge;
-  float share = nearestEdge(origin, film, pixel, edgeIds[outputIndex].x, edge)
-                    ? edgeSplit(edge, origin, film, centreSide, farSide)
-                    : 1.0;
+  float share = entry.y != EDGE_NONE ? edgeSplit(entry.y, origin, film, centreSide, farSide) : 1.0;
   // One call of radiance, in a do-while (as RAYTEX_SUPERSAMPLE's).
   vec3 sum = vec3(0.0);
   uint i = 0u;
@@ -384,7 +385,7 @@ void main() {
   uint k = PROGRESSIVE ? frame.sampleIndex : 0u;
   sum += radiance(origin, vec2(pixel) + (vec2(k % n, k / n) + 0.5) / float(n), 1.0 / float(n));
   checkLoopBudget(1u);
-  if (EDGE_IDS && inside) edgeIds[outputIndex] = uvec2(edgeHit, edgeShadow);
+  if (EDGE_FLAGS && inside && (edgeObject != EDGE_NONE || edgeShadow)) listEdgePixel(outputIndex);
 #endif
   if (PROGRESSIVE) {
     if (inside) {

@@ -1,0 +1,84 @@
+// The coverage filter's main kernel (FILTER_COVERAGE, EDGE_FLAGS): which pixels an edge may
+// cross, found while the pixel is traced, after Amanatides' cones ("Ray tracing with cones",
+// SIGGRAPH 1984). Every sphere a primary ray tests is measured against the pixel's cone: where
+// its silhouette passes within the pixel (the distance of its centre from the ray's line within
+// the cone's radius of r) and in front of the hit, it is the pixel's edge object, the nearest
+// such edge if there are several; so is a plane whose horizon passes within the pixel, where
+// the ray sees the plane or nothing. Every sphere a shadow ray tests is measured alike against
+// the bundle of shadow rays from the pixel's footprint to the light. The main kernel lists the
+// pixels with an edge object or a shadow's edge (BINDING_EDGE_LIST) for the edge pass
+// (coverage.glsl). Spheres a tree walk or a list skips are not measured: an edge along such a
+// sphere's box, or just outside a shadow list's cell, is missed (docs/accuracy.md).
+//
+// Needs (declared by the including kernel): EDGE_FLAGS, primaryRay.
+#ifndef RAYTEX_EDGE_FLAGS_GLSL
+#define RAYTEX_EDGE_FLAGS_GLSL
+
+float edgeCone = 0.0;        // the primary ray's cone: its radius at unit distance
+uint edgeObject = EDGE_NONE; // the object (EDGE_ID) whose edge passes nearest within the pixel
+float edgeMargin = 1.0;      // its distance from the ray in cone radii (below 1: within the pixel)
+float edgeNear = 0.0;        // how far along the ray its edge begins
+bool edgeShadow = false;     // a shadow ray passed within its bundle's radius of a sphere's edge
+float shadowRadius = 0.0;    // the radius of the bundle of shadow rays at the surface
+float shadowLength = 0.0;    // the current shadow ray's distance to its light
+
+// |distance of the sphere's centre from the line o + t d (unit d) - r| in units of `radius`
+// (from the discriminant, without a square root: |r^2 - h^2| against radius (2r + radius));
+// `along`: how far along the line the centre lies.
+float sphereMargin(vec3 o, vec3 d, vec4 cr, float along, float radius) {
+  vec3 perp = o + along * d - cr.xyz;
+  float disc = cr.w * cr.w - dot(perp, perp);
+  return abs(disc) / max(radius * (2.0 * cr.w + radius), 1.0e-30);
+}
+
+// Before a primary ray is traced through `film`: its cone reaches the pixel's corners (half a
+// diagonal of the step to the next pixel, with a margin of 10 %).
+void startEdgeFlags(vec2 film) {
+  if (!EDGE_FLAGS) return;
+  edgeCone = 0.78 * length(primaryRay(film + vec2(1.0, 0.0)) - primaryRay(film));
+  edgeObject = EDGE_NONE;
+  edgeMargin = 1.0;
+  edgeShadow = false;
+}
+
+// A primary ray from o along unit d, nearest hit so far at tMax, tests sphere `index`.
+void notePrimarySphere(vec3 o, vec3 d, vec4 cr, uint index, float tMax) {
+  if (!EDGE_FLAGS) return;
+  float along = dot(cr.xyz - o, d);
+  float margin = sphereMargin(o, d, cr, along, edgeCone * max(along, 0.0));
+  if (margin < edgeMargin && along > 0.0 && along - cr.w < tMax) {
+    edgeMargin = margin;
+    edgeObject = HIT_SPHERE << EDGE_KIND_SHIFT | index;
+    edgeNear = along - cr.w;
+  }
+}
+
+// A primary ray along unit d tests plane `index`: its horizon lies where d meets the plane at 0.
+void notePrimaryPlane(vec3 d, vec4 normalDistance, uint index) {
+  if (!EDGE_FLAGS) return;
+  float margin = abs(dot(normalDistance.xyz, d)) / max(edgeCone, 1.0e-30);
+  if (margin < edgeMargin) {
+    edgeMargin = margin;
+    edgeObject = HIT_PLANE << EDGE_KIND_SHIFT | index;
+    edgeNear = T_MAX;
+  }
+}
+
+// After the primary ray's closest hit: an edge hidden behind the hit surface is none (a horizon
+// shows only where the ray sees its plane or nothing).
+void endPrimaryEdges(Hit hit) {
+  if (!EDGE_FLAGS || edgeObject == EDGE_NONE) return;
+  bool itself = edgeObject == (hit.kind << EDGE_KIND_SHIFT | hit.index);
+  if (!itself && hit.kind != HIT_NONE && !(edgeNear < hit.t)) edgeObject = EDGE_NONE;
+}
+
+// A shadow ray from o along unit l (shadowLength to the light) tests a sphere: the bundle's
+// radius shrinks linearly to 0 at the light.
+void noteShadowSphere(vec3 o, vec3 l, vec4 cr) {
+  if (!EDGE_FLAGS) return;
+  float along = dot(cr.xyz - o, l);
+  float radius = 1.1 * shadowRadius * max(1.0 - along / shadowLength, 0.0);
+  if (along > 0.0 && along < shadowLength && sphereMargin(o, l, cr, along, radius) < 1.0) edgeShadow = true;
+}
+
+#endif  // RAYTEX_EDGE_FLAGS_GLSL
