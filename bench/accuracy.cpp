@@ -1,5 +1,6 @@
 // Accuracy benchmark (prints and writes numbers, asserts nothing): every method and sample
-// count on a set of scenes, each timed on the GPU (timestamps, median of warm frames) and
+// count on a set of scenes, each timed on the GPU (timestamps, median of warm frames, with the
+// kernel raytex render uses: values baked in) and
 // compared with the float64 reference renderer (64x64 stratified samples per pixel).
 // Writes OUTDIR/accuracy.csv and the images (sRGB PNG) that bench/accuracy_chart.py reads.
 // Usage: raytex_bench_accuracy OUTDIR WIDTH HEIGHT RUNS NAME=SCENE [NAME=SCENE ...]
@@ -32,7 +33,8 @@ int main(int argc, char** argv) {
   struct Method {
     const char* name;
     uint32_t filter;
-  } methods[] = {{"point", FILTER_POINT}, {"box", FILTER_BOX}};
+    uint32_t maxSide;  // coverage renders one sample per pixel
+  } methods[] = {{"point", FILTER_POINT, 8}, {"box", FILTER_BOX, 8}, {"coverage", FILTER_COVERAGE, 1}};
   const uint32_t sides[] = {1, 2, 4, 8};  // 1, 4, 16, 64 samples per pixel
 
   std::string csvPath = outDir + "/accuracy.csv";
@@ -45,6 +47,7 @@ int main(int argc, char** argv) {
   try {
     Renderer r;
     createRenderer(r, {});
+    r.coverage = true;  // room for the coverage filter's edge list
     printf("device: %s; %dx%d; GPU time median of %d frames; reference %dx%d spp float64\n",
            r.device.properties.deviceName, width, height, runs, referenceSide, referenceSide);
     for (int a = 5; a < argc; ++a) {
@@ -66,9 +69,11 @@ int main(int argc, char** argv) {
       uploadScene(r, g);
       for (const Method& m : methods) {
         for (uint32_t side : sides) {
+          if (side > m.maxSide) continue;
           KernelOptions kernel;
           kernel.textureFilter = m.filter;
           kernel.samplesPerSide = side;
+          kernel.bakeValues = true;  // as raytex render builds it
           preparePipeline(r, kernelKey(g, kernel));
           renderFrame(r);  // warm-up: lavapipe compiles at the first dispatch
           std::vector<double> ms;
@@ -82,7 +87,7 @@ int main(int argc, char** argv) {
           writePngAtomic(outDir + "/" + image, encodeSrgb(framePixels(r), width, height));
           fprintf(csv, "%s,%s,%u,%.3f,%.6f,%s,%s\n", name.c_str(), m.name, side * side, median(ms),
                   error, image.c_str(), refImage.c_str());
-          printf("  %-6s %3u spp  %9.2f ms  RMSE %.5f\n", m.name, side * side, median(ms), error);
+          printf("  %-8s %3u spp  %9.2f ms  RMSE %.5f\n", m.name, side * side, median(ms), error);
         }
       }
     }

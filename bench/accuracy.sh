@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
-# The speed-accuracy chart: renders the course scene's textures, the horizon scene and the
-# bricks scene with every method and sample count, times them on the GPU and measures their
+# The speed-accuracy chart: renders the course scene with each of its eight materials, the
+# horizon scene, the bricks scene and the placed Earth with every method and sample count, times them on the GPU and measures their
 # error against the float64 reference, then draws docs/accuracy.png and writes docs/accuracy.csv.
 # Usage: bench/accuracy.sh [BUILD_DIR]   (default build; env: WIDTH, HEIGHT, RUNS, default
-#        160 120 5; needs python3-matplotlib from Debian; SSIM comes from raytex diff)
+#        160 120 5; needs python3-matplotlib from Debian; SSIM and FLIP come from raytex diff)
 #   writes BUILD_DIR/accuracy/ (the CSV and images), docs/accuracy.png and docs/accuracy.csv.
 set -euo pipefail
 [ $# -le 1 ] || { echo "usage: bench/accuracy.sh [BUILD_DIR]   (env: WIDTH, HEIGHT, RUNS)" >&2; exit 2; }
@@ -19,12 +19,12 @@ scenes=()
 variants=()
 trap 'rm -f "${variants[@]}"' EXIT
 # The course scene with another material on the sphere, switched as the notes say.
-for material in aSolidChecker aMarble anImage; do
+for material in aChecker aSolidChecker aNoise aMarble aWood anImage aTurbulence aDturbulence; do
   scene=$(mktemp "${TMPDIR:-/tmp}/raytex-accuracy-XXXXXX.cfg")
   variants+=("$scene")
   scripts/course-scene.sh "$material" >"$scene"
   scenes+=("$material=$scene")
 done
-scenes+=("horizon=scenes/horizon.cfg" "bricks=scenes/bricks.cfg")
+scenes+=("horizon=scenes/horizon.cfg" "bricks=scenes/bricks.cfg" "earth=scenes/placed_earth.cfg")
 "$build/raytex_bench_accuracy" "$out" "$width" "$height" "$runs" "${scenes[@]}"
 /usr/bin/python3 bench/accuracy_chart.py "$out/accuracy.csv" docs/accuracy.png docs/accuracy.csv "$build/raytex"

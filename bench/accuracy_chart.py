@@ -2,8 +2,9 @@
 """Draws the speed-accuracy chart from raytex_bench_accuracy's CSV.
 
 Adds SSIM (of the sRGB images, against the float64 reference, as `raytex diff --json` reports
-it: 7x7 uniform windows, sample covariances, the mean over channels) to each row and plots error
-against GPU time, log-log: one panel per scene, one line per method, one point per sample count.
+it: 7x7 uniform windows, sample covariances, the mean over channels) and FLIP (LDR-FLIP's mean,
+as `raytex diff` reports it) to each row and plots RMSE and FLIP against GPU time, log-log: two
+panels per scene, one line per method, one point per sample count.
 Usage: bench/accuracy_chart.py IN.csv OUT.png OUT.csv RAYTEX
 """
 import csv
@@ -19,10 +20,11 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 
-def ssim(raytex, reference, image):
-    """The SSIM raytex diff reports for the pair."""
+def compare(raytex, reference, image):
+    """The SSIM and FLIP raytex diff reports for the pair."""
     report = subprocess.run([raytex, "diff", reference, image, "--json"], check=True, capture_output=True, text=True)
-    return json.loads(report.stdout)["ssim"]
+    metrics = json.loads(report.stdout)
+    return metrics["ssim"], metrics["flip"]
 
 
 def main():
@@ -35,24 +37,33 @@ def main():
     for row in rows:
         image = os.path.join(folder, row["image"])
         reference = os.path.join(folder, row["reference"])
-        row["ssim"] = "%.5f" % ssim(raytex, reference, image)
+        row["ssim"], row["flip"] = ("%.5f" % m for m in compare(raytex, reference, image))
     with open(table, "w", newline="") as f:
-        writer = csv.DictWriter(f, fieldnames=["scene", "method", "spp", "gpu_ms", "rmse", "ssim"],
+        writer = csv.DictWriter(f, fieldnames=["scene", "method", "spp", "gpu_ms", "rmse", "ssim", "flip"],
                                 extrasaction="ignore")
         writer.writeheader()
         writer.writerows(rows)
 
     scenes = list(dict.fromkeys(r["scene"] for r in rows))
     methods = list(dict.fromkeys(r["method"] for r in rows))
-    fig, axes = plt.subplots(2, len(scenes), figsize=(3.6 * len(scenes), 6.4), squeeze=False)
-    styles = {"point": ("tab:red", "o"), "box": ("tab:blue", "s")}
-    for col, scene in enumerate(scenes):
-        for row_index, (metric, label) in enumerate([("rmse", "RMSE (linear)"), ("ssim", "1 - SSIM (sRGB)")]):
-            ax = axes[row_index][col]
+    columns = 4
+    metrics = [("rmse", "RMSE (linear)"), ("flip", "FLIP (sRGB)")]
+    blocks = (len(scenes) + columns - 1) // columns
+    fig, axes = plt.subplots(2 * blocks, columns, figsize=(3.4 * columns, 2.7 * 2 * blocks), squeeze=False)
+    styles = {"point": ("tab:red", "o"), "box": ("tab:blue", "s"), "coverage": ("tab:green", "D")}
+    for index in range(blocks * columns):
+        block, col = divmod(index, columns)
+        if index >= len(scenes):
+            for row_index in range(len(metrics)):
+                axes[2 * block + row_index][col].axis("off")
+            continue
+        scene = scenes[index]
+        for row_index, (metric, label) in enumerate(metrics):
+            ax = axes[2 * block + row_index][col]
             for method in methods:
                 pts = [r for r in rows if r["scene"] == scene and r["method"] == method]
                 xs = [float(r["gpu_ms"]) for r in pts]
-                ys = [float(r[metric]) if metric == "rmse" else 1.0 - float(r[metric]) for r in pts]
+                ys = [float(r[metric]) for r in pts]
                 color, marker = styles.get(method, ("black", "x"))
                 ax.plot(xs, ys, marker=marker, color=color, label=method)
                 for x, y, r in zip(xs, ys, pts):
@@ -60,12 +71,13 @@ def main():
             ax.set_xscale("log")
             ax.set_yscale("log")
             ax.grid(True, which="both", alpha=0.3)
+            ax.tick_params(labelsize=7)
             if row_index == 0:
-                ax.set_title(scene)
+                ax.set_title(scene, fontsize=9)
             if col == 0:
-                ax.set_ylabel(label)
+                ax.set_ylabel(label, fontsize=8)
             if row_index == 1:
-                ax.set_xlabel("GPU time per frame (ms)")
+                ax.set_xlabel("GPU time per frame (ms)", fontsize=7)
     axes[0][0].legend(title="texture filter", fontsize=8)
     fig.suptitle("raytex: error vs time, numbers = samples per pixel; reference: float64, 64x64 spp\n"
                  "Mesa lavapipe (CPU Vulkan), %s, 2 threads" % platform.machine(), fontsize=9)

@@ -127,6 +127,7 @@ void renderImage(Renderer& renderer, bool perSample, uint32_t extraFrames, Headl
   const uint32_t bands = bandCount(renderer);
   for (uint32_t b = 0; b < bands; ++b) {
     renderBand(renderer, b * renderer.bandRows, perSample, job.samplesPerPixel);
+    out->edgePixels += edgePixelCount(renderer);
     if (bands > 1) keepBand(renderer, out, output);
   }
   out->times.firstDispatch = lapMs(t);  // several bands: their readbacks and writes too
@@ -146,9 +147,9 @@ void renderPrepared(Renderer& renderer, const Scene& scene, const GpuScene& gpuS
   const RenderJob& job = out->job;
   PhaseTimes& times = out->times;
   const int errorsBefore = renderer.device.validationErrors;
-  if (renderer.device.lavapipe) checkLoopLimit(scene);
   renderer.passMask = passMask(output.options.passes);
   renderer.coverage = job.filter == TextureFilter::Coverage;
+  if (renderer.device.lavapipe) checkLoopLimit(scene, renderer.coverage ? 2 : 1);
   output.eye = scene.camera.eye;
   const bool perSample = samplesPerDispatch(renderer, scene, gpuScene, job);
   renderer.accumulate = perSample;

@@ -91,12 +91,15 @@ void runRender(const RenderOptions& options) {
   HeadlessRender render;
   renderHeadless(options, 0, &render);
   const PhaseTimes& t = render.times;
-  if (options.stats)
-    printf("device %.1f ms | parse %.1f ms | upload %.1f ms | pipeline %.1f ms | render %.1f ms | "
-           "readback %.1f ms | encode %.1f ms | images %.1f MiB | %ux%u, %u spp\n",
-           t.device, t.parse, t.upload, t.pipeline, t.firstDispatch, t.readback, t.encode,
-           double(render.imageBytes) / (1024.0 * 1024.0), render.job.width, render.job.height,
-           render.job.samplesPerPixel);
+  if (!options.stats) return;
+  printf("device %.1f ms | parse %.1f ms | upload %.1f ms | pipeline %.1f ms | render %.1f ms | "
+         "readback %.1f ms | encode %.1f ms | images %.1f MiB | %ux%u, %u spp",
+         t.device, t.parse, t.upload, t.pipeline, t.firstDispatch, t.readback, t.encode,
+         double(render.imageBytes) / (1024.0 * 1024.0), render.job.width, render.job.height,
+         render.job.samplesPerPixel);
+  if (render.job.filter == TextureFilter::Coverage)
+    printf(" | %llu edge pixels", static_cast<unsigned long long>(render.edgePixels));
+  printf("\n");
 }
 
 // The command's exit code when it does not throw (diff: 1 when over a limit).

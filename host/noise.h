@@ -17,7 +17,7 @@
 
 // The most octaves turbulence()/dturbulence() sum (larger counts are clamped;
 // octave 16 already has 65536x the base frequency). Same as NOISE_MAX_OCTAVES in
-// shaders/noise.glsl.
+// shaders/common.h.
 constexpr int kNoiseMaxOctaves = 16;
 
 // The gradient the hash h selects (only the low 4 bits are used).

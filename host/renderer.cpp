@@ -563,6 +563,11 @@ void renderFrame(Renderer& r) {
     r.lastFrameMs = double(ticks[1] - ticks[0]) * r.device.properties.limits.timestampPeriod * 1e-6;
 }
 
+uint32_t edgePixelCount(const Renderer& r) {
+  // The list's header (clearEdgeList), written by the main kernel; renderFrame's barrier makes it visible.
+  return r.edgePipeline && r.edgeList.data ? static_cast<const uint32_t*>(r.edgeList.data)[3] : 0;
+}
+
 void renderSample(Renderer& r, uint32_t index) {
   // The previous dispatch has completed (renderFrame waits), so the mapped uniform can change.
   gpu::Frame* frame = static_cast<gpu::Frame*>(r.frame.data);

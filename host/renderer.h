@@ -135,6 +135,9 @@ void renderFrame(Renderer& renderer);
 // After N * N of them it is bit-identical to renderFrame's image with the N x N pipeline.
 void renderSample(Renderer& renderer, uint32_t index);
 
+// The pixels the last renderFrame's edge pass shaded again (FILTER_COVERAGE), else 0.
+uint32_t edgePixelCount(const Renderer& renderer);
+
 // Makes the rendered image and its passes visible to the host; waits.
 void readbackFrame(Renderer& renderer);
 

@@ -42,15 +42,21 @@ size_t loopTestedObjects(const Scene& scene) {
   return scene.planes.size() + (tree ? 0 : scene.spheres.size());
 }
 
-void checkLoopLimit(const Scene& scene) {
+void checkLoopLimit(const Scene& scene, uint32_t traces) {
   const size_t objects = loopTestedObjects(scene);
-  const uint64_t iterations = loopIterationsPerSample(scene);
+  const uint64_t iterations = traces * loopIterationsPerSample(scene);
   if (iterations <= kMaxLoopIterations) return;
-  // With n lights, (n + 1) (objects + 1) passes the limit from n = limit / (objects + 1) on.
-  size_t first = std::min(std::max<size_t>(kMaxLoopIterations / (objects + 1), 1), scene.lights.size()) - 1;
+  // With n lights, traces ((n + 1) (objects + 3) + reserve) passes the limit from
+  // n = (limit / traces - reserve) / (objects + 3) on.
+  const uint64_t reserve = LOOP_PASSES_PER_SAMPLE + 1, perLight = objects + 3;
+  const uint64_t share = kMaxLoopIterations / traces;
+  const size_t over = size_t(share > reserve ? (share - reserve) / perLight : 0);
+  const size_t first = std::min(std::max<size_t>(over, 1), scene.lights.size()) - 1;
+  const std::string sum = "(lights + 1) x (objects + 3) + " + std::to_string(reserve);
   throw SceneError(scene.lights[first].loc,
                    "the scene has " + std::to_string(scene.lights.size()) + " lights and " + std::to_string(objects) +
-                       " objects every ray tests: (lights + 1) x (objects + 1) = " + std::to_string(iterations) +
-                       " intersection tests per sample, more than the " + std::to_string(kMaxLoopIterations) +
-                       " the lavapipe driver runs");
+                       " objects every ray tests: " + (traces > 1 ? std::to_string(traces) + " x (" + sum + ")" : sum) +
+                       " = " + std::to_string(iterations) + " loop passes per " +
+                       (traces > 1 ? "edge pixel of the coverage filter" : "sample") + ", more than the " +
+                       std::to_string(kMaxLoopIterations) + " the lavapipe driver runs");
 }

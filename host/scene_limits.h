@@ -2,6 +2,7 @@
 // and the loop limit of one driver, checked once the device is known. No Vulkan.
 #pragma once
 
+#include "common.h"
 #include "scene.h"
 
 #include <cstdint>
@@ -14,19 +15,24 @@ void checkSceneLimits(const Scene& scene);
 // Lavapipe ends a kernel's loops after 65535 passes (its guard against endless loops): the rest
 // of the kernel's work is silently dropped (64 lights and 1024 spheres lost their shadow tests).
 // Its kernels count their passes against this budget and report passing it (common.h,
-// SPEC_LOOP_BUDGET). Before any render, a scene whose loops test every object is checked here:
-// a sample's loops then run about (lights + 1) x (objects + 1) times.
+// SPEC_LOOP_BUDGET). Before any render, a scene whose loops test every object is checked here
+// against what the kernels count (shaders/loop_budget.glsl): a sample's closest hit passes
+// objects + 2 times (each loop counts a masked pass), each light's shadow ray objects + 2 and
+// the loop over lights lights + 1, so (lights + 1) x (objects + 3) in all, with
+// LOOP_PASSES_PER_SAMPLE + 1 reserved for the loops bounded by constants.
 constexpr uint64_t kMaxLoopIterations = 65000;
 
 // The objects a sample's loops test, each ray every one: the planes, and the spheres unless a
 // sphere tree bounds them (gpu_tree.h, sphereTreeFor).
 size_t loopTestedObjects(const Scene& scene);
-// About how many loop passes one sample makes where every ray tests every object it loops over.
+// The loop passes one sample makes at most where every ray tests every object it loops over.
 inline uint64_t loopIterationsPerSample(const Scene& scene) {
-  return uint64_t(scene.lights.size() + 1) * uint64_t(loopTestedObjects(scene) + 1);
+  return uint64_t(scene.lights.size() + 1) * uint64_t(loopTestedObjects(scene) + 3) + LOOP_PASSES_PER_SAMPLE + 1;
 }
 
-// Throws SceneError (at the first light over) when a sample's loops pass kMaxLoopIterations.
-// Applies to lavapipe only; samples that together would pass it are dispatched one at a time
-// (headless.cpp). A sphere tree's walks are counted while the kernel runs.
-void checkLoopLimit(const Scene& scene);
+// Throws SceneError (at the first light over) when `traces` samples' loops pass
+// kMaxLoopIterations: 1 for a kernel's sample, 2 for the coverage filter's edge pass, which shades
+// both sides of an edge in one invocation. Applies to lavapipe only; samples that together would
+// pass it are dispatched one at a time (headless.cpp). A sphere tree's walks are counted while
+// the kernel runs.
+void checkLoopLimit(const Scene& scene, uint32_t traces = 1);

@@ -71,7 +71,9 @@ using uvec4 = glm::uvec4;
 // shadow's edge alone); a 16-byte placeholder without the filter.
 #define BINDING_EDGE_LIST 18
 #define EDGE_GROUP_SIZE 64u   // edge pixels per workgroup of the edge pass (WORKGROUP_X * WORKGROUP_Y)
-#define EDGE_KIND_SHIFT 30u   // EDGE_ID: HIT_* << EDGE_KIND_SHIFT | the object's index
+#define EDGE_KIND_SHIFT 30u   // EDGE_ID: HIT_* << EDGE_KIND_SHIFT | the object's index, or
+#define EDGE_CREASE 3u        // EDGE_CREASE << EDGE_KIND_SHIFT | plane << EDGE_PLANE_SHIFT | plane
+#define EDGE_PLANE_SHIFT 15u  // (the line where two planes meet)
 #define EDGE_NONE 0xFFFFFFFFu
 #define MAX_TILE_KERNELS 4u
 #define TILE_ORDER_CHUNK 16384u  // tiles one dispatch renders at most: 64 KiB of words
@@ -81,7 +83,7 @@ using uvec4 = glm::uvec4;
 // maxUniformBufferRange on lavapipe and NVIDIA (buildGpuScene reports a scene over them).
 #define MAX_MATERIALS 256  // 256 * 112 bytes = 28 KiB
 #define MAX_UNIFORM_SPHERES 1024  // 1024 * 64 bytes = 64 KiB
-#define MAX_PLANES 256     // 256 * 144 bytes = 36 KiB
+#define MAX_PLANES 256     // 256 * 144 bytes = 36 KiB (an EDGE_CREASE holds two indices)
 #define MAX_LIGHTS 256     // 256 * 32 bytes = 8 KiB
 // Image files per scene: one combined image sampler each, picked by a switch over constant
 // indices (lavapipe indexes sampler arrays only with constants). 16 is Vulkan's guaranteed
@@ -131,6 +133,12 @@ using uvec4 = glm::uvec4;
 // count their loops' passes per group and, before the driver's limit, stop and set
 // STATUS_LOOP_BUDGET in BINDING_STATUS; the host reports it.
 #define STATUS_LOOP_BUDGET 1u  // bit of word 0: some group's loops passed the budget
+// Octave counts above this are clamped (kNoiseMaxOctaves in host/noise.h).
+#define NOISE_MAX_OCTAVES 16u
+// Loop passes per sample bounded by constants, reserved for in the budget: the noise kinds' octave
+// loops (each runs in every SIMD group with its kind, at most NOISE_MAX_OCTAVES passes, and one
+// masked), the box filter's probes (9) and the image's (at most 32, on a sphere, and one masked).
+#define LOOP_PASSES_PER_SAMPLE (4u * (NOISE_MAX_OCTAVES + 1u) + 9u + 33u)
 #define STATUS_WORDS 4
 
 // Texture kinds (Material.textureKind; one row each in host/texture_kinds.cpp, GLSL in
@@ -382,6 +390,9 @@ static_assert(sizeof(Light) == 32, "Light layout");
 static_assert(sizeof(BvhNode) == 32, "BvhNode layout");
 static_assert(MAX_UNIFORM_TREE_NODES >= 2 * MAX_UNIFORM_SPHERES - 1, "a tree over the uniform spheres fits its block");
 static_assert(MAX_SPHERES < (1u << TREE_LEAF_SHIFT), "BvhNode.spheres holds a first sphere");
+static_assert(MAX_SPHERES < (1u << EDGE_KIND_SHIFT) && 2 * EDGE_PLANE_SHIFT <= EDGE_KIND_SHIFT &&
+                  MAX_PLANES <= (1u << EDGE_PLANE_SHIFT) && HIT_SPHERE != EDGE_CREASE && HIT_PLANE != EDGE_CREASE,
+              "an EDGE_ID holds a sphere, a plane or two planes");
 static_assert(TILE_SIZE == WORKGROUP_X && TILE_SIZE == WORKGROUP_Y, "a tile is a workgroup");
 static_assert(sizeof(NoiseTable) == NOISE_PERM_SIZE * 4, "NoiseTable layout");
 static_assert(sizeof(Sphere) / 4 <= BAKED_SPHERE_STRIDE && sizeof(Plane) / 4 <= BAKED_PLANE_STRIDE &&

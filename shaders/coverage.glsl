@@ -5,6 +5,7 @@
 //   minus the radius (coverGap);
 // - a plane's horizon: where the primary ray turns parallel to the plane, a straight line on the
 //   film (coverGap);
+// - a crease, the line where two planes meet: also straight on the film (coverGap);
 // - a shadow's edge: the distance of the occluding sphere's centre from the segment from the
 //   surface point to the light, minus the radius, over the pixel's footprint on the surface
 //   (litShare).
@@ -15,8 +16,8 @@
 // of its part of the pixel, mixed by their shares, with every light weighted by its lit share.
 // Textures keep the box filter. Approximations (docs/accuracy.md, "The coverage filter"): two
 // surfaces per pixel (the edge nearest the centre), straight edges within a pixel, the
-// occluders' shares multiplied as if independent; shadows of planes, and the edges where two
-// surfaces cut each other, not covered.
+// occluders' shares multiplied as if independent; shadows of planes, and the edges where a
+// sphere cuts a plane or another sphere, not covered.
 //
 // Needs (declared by the including kernel): frame, sphereAt, planeAt, sphereCount, planeCount,
 // primaryRayUnnormalized, intersectPlane, occluded.
@@ -40,14 +41,20 @@ float shareBelow(float value, vec2 gradient) {
   return 0.5 + u / a;
 }
 
-// The object of an EDGE_ID, and its kind (HIT_*).
+// The object of an EDGE_ID, and its kind (HIT_* or EDGE_CREASE).
 uint edgeKind(uint id) { return id >> EDGE_KIND_SHIFT; }
 uint edgeIndex(uint id) { return id & ((1u << EDGE_KIND_SHIFT) - 1u); }
 
 // Negative where the object `id` covers the primary ray through `film` (it may still be hidden
-// by a nearer one), positive where the ray passes it; 0 on its silhouette or horizon.
+// by a nearer one), positive where the ray passes it; 0 on its silhouette or horizon. For a
+// crease: negative on one plane's side, positive on the other's.
 float coverGap(uint id, vec3 o, vec2 film) {
   vec3 d = primaryRayUnnormalized(film);
+  if (edgeKind(id) == EDGE_CREASE) {
+    uint mask = (1u << EDGE_PLANE_SHIFT) - 1u;
+    vec3 m = creaseNormal(o, planeAt((id >> EDGE_PLANE_SHIFT) & mask).normalDistance, planeAt(id & mask).normalDistance);
+    return dot(m, d) / (length(m) * length(d));
+  }
   if (edgeKind(id) == HIT_PLANE) {
     // Linear in film: the horizon is a straight line. The ray meets the plane ahead where d . n
     // has the sign of the eye's side.
@@ -60,8 +67,8 @@ float coverGap(uint id, vec3 o, vec2 film) {
   return (along > 0.0 ? length(f - along * u) : length(f)) - cr.w;
 }
 
-// The gap's change over one pixel along x and y (central differences: exact for the horizon,
-// within the silhouette's curvature for spheres).
+// The gap's change over one pixel along x and y (central differences: exact for the horizon
+// and creases, within the silhouette's curvature for spheres).
 vec2 coverGapGradient(uint id, vec3 o, vec2 film) {
   return vec2(coverGap(id, o, film + vec2(0.5, 0.0)) - coverGap(id, o, film - vec2(0.5, 0.0)),
               coverGap(id, o, film + vec2(0.0, 0.5)) - coverGap(id, o, film - vec2(0.0, 0.5)));
@@ -102,12 +109,15 @@ float segmentGap(vec3 q, vec3 target, vec4 cr) {
 // `passes`: as occluded's.
 float litShare(vec3 o, vec3 l, float dist, uint light, out uint passes) {
   if (SPHERE_TREE != SPHERE_TREE_NONE) return occluded(o, l, dist, light, passes) ? 0.0 : 1.0;
-  passes = 1u + planeCount();
-  for (uint i = 0u; i < planeCount(); ++i)
+  passes = 1u;  // a masked pass of the second loop (countLoop adds one)
+  for (uint i = 0u; i < planeCount(); ++i) {
+    ++passes;
     if (intersectPlane(o, l, planeAt(i).normalDistance, 0.0, dist) > 0.0) return 0.0;
+  }
   vec3 target = o + l * dist;
   float lit = 1.0;
   for (uint i = 0u; i < sphereCount(); ++i) {
+    ++passes;
     if (i == shadeSelf) continue;
     vec4 cr = sphereAt(i).centerRadius;
     float g = segmentGap(o, target, cr);

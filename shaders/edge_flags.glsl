@@ -4,7 +4,8 @@
 // its silhouette passes within the pixel (the distance of its centre from the ray's line within
 // the cone's radius of r) and in front of the hit, it is the pixel's edge object, the nearest
 // such edge if there are several; so is a plane whose horizon passes within the pixel, where
-// the ray sees the plane or nothing. Every sphere a shadow ray tests is measured alike against
+// the ray sees the plane or nothing, and the line where the plane the ray sees meets the next
+// plane along it (a crease, EDGE_CREASE). Every sphere a shadow ray tests is measured alike against
 // the bundle of shadow rays from the pixel's footprint to the light. The main kernel lists the
 // pixels with an edge object or a shadow's edge (BINDING_EDGE_LIST) for the edge pass
 // (coverage.glsl). Spheres a tree walk or a list skips are not measured: an edge along such a
@@ -21,6 +22,10 @@ float edgeNear = 0.0;        // how far along the ray its edge begins
 bool edgeShadow = false;     // a shadow ray passed within its bundle's radius of a sphere's edge
 float shadowRadius = 0.0;    // the radius of the bundle of shadow rays at the surface
 float shadowLength = 0.0;    // the current shadow ray's distance to its light
+float planeNearT = T_MAX;    // the primary ray's two nearest plane hits, and their planes
+float planeNextT = T_MAX;
+uint planeNear = 0u;
+uint planeNext = 0u;
 
 // |distance of the sphere's centre from the line o + t d (unit d) - r| in units of `radius`
 // (from the discriminant, without a square root: |r^2 - h^2| against radius (2r + radius));
@@ -39,6 +44,8 @@ void startEdgeFlags(vec2 film) {
   edgeObject = EDGE_NONE;
   edgeMargin = 1.0;
   edgeShadow = false;
+  planeNearT = T_MAX;
+  planeNextT = T_MAX;
 }
 
 // A primary ray from o along unit d, nearest hit so far at tMax, tests sphere `index`.
@@ -53,8 +60,9 @@ void notePrimarySphere(vec3 o, vec3 d, vec4 cr, uint index, float tMax) {
   }
 }
 
-// A primary ray along unit d tests plane `index`: its horizon lies where d meets the plane at 0.
-void notePrimaryPlane(vec3 d, vec4 normalDistance, uint index) {
+// A primary ray from o along unit d tests plane `index`: its horizon lies where d meets the
+// plane at 0; its hit, if among the two nearest, may be a crease's side.
+void notePrimaryPlane(vec3 o, vec3 d, vec4 normalDistance, uint index) {
   if (!EDGE_FLAGS) return;
   float margin = abs(dot(normalDistance.xyz, d)) / max(edgeCone, 1.0e-30);
   if (margin < edgeMargin) {
@@ -62,14 +70,45 @@ void notePrimaryPlane(vec3 d, vec4 normalDistance, uint index) {
     edgeObject = HIT_PLANE << EDGE_KIND_SHIFT | index;
     edgeNear = T_MAX;
   }
+  float t = intersectPlane(o, d, normalDistance, 0.0, T_MAX);
+  if (t > 0.0 && t < planeNextT) {
+    bool nearest = t < planeNearT;
+    planeNextT = nearest ? planeNearT : t;
+    planeNext = nearest ? planeNear : index;
+    planeNearT = nearest ? t : planeNearT;
+    planeNear = nearest ? index : planeNear;
+  }
+}
+
+// The normal (unnormalised) of the plane through the eye o that holds the line where planes a
+// and b meet: the rays on its either side meet a or b first (for rays that meet both ahead,
+// t_a < t_b is linear in the ray: h_a (n_b . d) < h_b (n_a . d), h the eye's height over each).
+vec3 creaseNormal(vec3 o, vec4 a, vec4 b) {
+  return (a.w - dot(a.xyz, o)) * b.xyz - (b.w - dot(b.xyz, o)) * a.xyz;
+}
+
+// The primary ray's hit on the nearest plane: the crease with the next plane along the ray, if
+// it passes within the pixel and nearer the ray than the edge found so far.
+void notePrimaryCrease(vec3 o, vec3 d) {
+  if (planeNextT == T_MAX) return;
+  vec3 m = creaseNormal(o, planeAt(planeNear).normalDistance, planeAt(planeNext).normalDistance);
+  float margin = abs(dot(m, d)) / max(length(m) * edgeCone, 1.0e-30);
+  if (margin < edgeMargin) {
+    edgeMargin = margin;
+    edgeObject = EDGE_CREASE << EDGE_KIND_SHIFT | planeNear << EDGE_PLANE_SHIFT | planeNext;
+  }
 }
 
 // After the primary ray's closest hit: an edge hidden behind the hit surface is none (a horizon
-// shows only where the ray sees its plane or nothing).
-void endPrimaryEdges(Hit hit) {
-  if (!EDGE_FLAGS || edgeObject == EDGE_NONE) return;
+// shows only where the ray sees its plane or nothing); on a plane, the crease may be the edge.
+void endPrimaryEdges(vec3 o, vec3 d, Hit hit) {
+  if (!EDGE_FLAGS) return;
   bool itself = edgeObject == (hit.kind << EDGE_KIND_SHIFT | hit.index);
-  if (!itself && hit.kind != HIT_NONE && !(edgeNear < hit.t)) edgeObject = EDGE_NONE;
+  if (edgeObject != EDGE_NONE && !itself && hit.kind != HIT_NONE && !(edgeNear < hit.t)) {
+    edgeObject = EDGE_NONE;
+    edgeMargin = 1.0;
+  }
+  if (hit.kind == HIT_PLANE && hit.index == planeNear) notePrimaryCrease(o, d);
 }
 
 // A shadow ray from o along unit l (shadowLength to the light) tests a sphere: the bundle's

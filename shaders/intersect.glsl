@@ -60,7 +60,7 @@ Hit closestHit(vec3 o, vec3 d) {
   }
   for (uint i = 0u; i < planeCount(); ++i) {
     vec4 normalDistance = planeAt(i).normalDistance;
-    notePrimaryPlane(d, normalDistance, i);
+    notePrimaryPlane(o, d, normalDistance, i);
     float t = intersectPlane(o, d, normalDistance, 0.0, hit.t);
     if (t > 0.0) hit = Hit(t, HIT_PLANE, i);
   }

@@ -10,11 +10,6 @@
 // per sample, LOOP_PASSES_PER_SAMPLE at most, and reserved for. Kernels without a counted loop,
 // or without a budget (other devices), compile all of this to nothing.
 
-// Loop passes per sample bounded by constants: the noise kinds' octave loops (each runs in
-// every SIMD group with its kind, at most NOISE_MAX_OCTAVES passes, and one masked), the box
-// filter's probes (MAX_PROBES) and the image's (at most 32, on a sphere).
-const uint LOOP_PASSES_PER_SAMPLE = 4u * (NOISE_MAX_OCTAVES + 1u) + 9u + 33u;
-
 // Whether the kernel has a budget and a loop that grows with the scene. (No || or &&: glslang
 // turns them into branches, invalid SPIR-V outside a function.)
 const bool COUNTED_LOOPS = (uint(LOOP_BUDGET > 0u) &

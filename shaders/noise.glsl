@@ -16,9 +16,6 @@
 #ifndef RAYTEX_NOISE_GLSL
 #define RAYTEX_NOISE_GLSL
 
-// Octave counts above this are clamped (kNoiseMaxOctaves in host/noise.h).
-#define NOISE_MAX_OCTAVES 16u
-
 // perm[i] in the low 16 bits, perm[i + 1] in the high (i <= 510 here).
 uint noisePermPair(uint i) { return noiseTable.pairs[i >> 2][i & 3u]; }
 

@@ -228,7 +228,7 @@ vec3 radiance(vec3 origin, vec2 film, float spacing) {
   vec3 dir = primaryRay(film);
   startEdgeFlags(film);
   Hit hit = closestHit(origin, dir);
-  endPrimaryEdges(hit);
+  endPrimaryEdges(origin, dir, hit);
   if (hit.kind == HIT_NONE) return frame.background.rgb;
   Surface s = surfaceAt(hit, origin, dir);
   Material m = materialAt(s.material);

@@ -104,6 +104,10 @@ expect stats-images 0 '\| images 8.0 MiB \| 64x48, 1 spp$' -- \
   "$raytex" render "$course/image.cfg" -o "$tmp/ok.png" --width 64 --height 48 --stats
 expect stats-images-box 0 '\| images 10.7 MiB \| 64x48, 1 spp$' -- \
   "$raytex" render "$course/image.cfg" -o "$tmp/ok.png" --width 64 --height 48 --stats --filter box
+# The coverage filter's edge pixels: the sphere's silhouette, its shadow and the horizon cross
+# some of the 3072.
+expect stats-edge-pixels 0 '\| 64x48, 1 spp \| [1-9][0-9]+ edge pixels$' -- \
+  "$raytex" render "$src/scenes/textures.cfg" -o "$tmp/ok.png" --width 64 --height 48 --stats --filter coverage
 check png-signature test "$(head -c 8 "$tmp/ok.png" | od -An -tx1 | tr -d ' \n')" = 89504e470d0a1a0a
 check png-size test "$(od -An -tu1 -j16 -N8 "$tmp/ok.png" | tr -s ' ')" = " 0 0 0 64 0 0 0 48"
 check no-temp-files test "$(ls "$tmp" | grep -c tmp-)" -eq 0
@@ -211,9 +215,9 @@ for n in 62 1; do
 done
 check loop-limit-per-sample cmp -s "$tmp/lights62.png" "$tmp/lights1.png"
 # Over the limit in one sample (245 lights, 264 objects): refused on lavapipe after device
-# selection, at the first light over; the CPU reference has no such limit.
+# selection, at the first light over (the 243rd); the CPU reference has no such limit.
 manyLights 244 >"$tmp/lights245.cfg"
-expect loop-limit-lavapipe 2 "^$tmp/lights245.cfg:246:1: the scene has 245 lights and 264 objects every ray tests: .* the lavapipe driver runs\$" \
+expect loop-limit-lavapipe 2 "^$tmp/lights245.cfg:244:1: the scene has 245 lights and 264 objects every ray tests: .* the lavapipe driver runs\$" \
   -- "$raytex" render "$tmp/lights245.cfg" --width 8 --height 6 -o "$tmp/lights245.png"
 expect loop-limit-reference 0 '' -- "$raytex" render "$tmp/lights245.cfg" --reference --width 8 --height 6 \
   -o "$tmp/lights245-reference.png"

@@ -7,6 +7,7 @@
 #include "parser.h"
 #include "reference.h"
 #include "reference_render.h"
+#include "scene_limits.h"
 
 #include <gtest/gtest.h>
 
@@ -80,6 +81,20 @@ sphere { center = (0.4, 3, 0.2); radius = 0.6; ball; }
                         "shadow.cfg");
 }
 
+// A floor meeting a wall, each of one colour, lit by the ambient term alone: only the crease.
+Scene creaseScene() {
+  return parseSceneText(R"(
+material floor { ambient = (0.9, 0.8, 0.2); diffuse = (0, 0, 0); specular = (0, 0, 0); }
+material wall { ambient = (0.1, 0.3, 0.9); diffuse = (0, 0, 0); specular = (0, 0, 0); }
+ambient_light = (1, 1, 1);
+background = (0, 0, 0);
+camera { eye = (0.7, 1.5, 4); lookat = (0, 0.4, 0); up = (0, 1, 0); fov = 50; }
+plane { normal = (0, 1, 0); distance = 0; floor; }
+plane { normal = (0.3, 0, 1); distance = -1; wall; }
+)",
+                        "crease.cfg");
+}
+
 constexpr uint32_t kWidth = 96, kHeight = 72;
 // Samples per side of the reference: its box-filtered pixels within about 1/(2 * 48) of the
 // exact share of a straight edge.
@@ -91,13 +106,16 @@ constexpr int kReferenceSide = 48;
 // which the coverage filter computes in closed form and the box filter rounds to 0 or 1. The
 // bound: the reference's own error (a share quantised to 1/48^2 of a pixel along each row of
 // samples, up to 1/48 of the step) plus the curvature of a silhouette across a pixel, measured
-// at 0.011 (silhouette), 0.006 (horizon) and 0.013 (shadow) on lavapipe; the box filter's worst
-// pixel is near half the step in each.
+// at 0.004 (silhouette), 0.007 (horizon), 0.006 (shadow) and 0.001 (crease) on lavapipe; the box
+// filter's worst pixel is 0.32-0.45, near half the step in each.
 TEST_F(CoverageTest, EachEdgeAloneMatchesTheReferencePixelByPixel) {
   struct Case {
     const char* name;
     Scene scene;
-  } cases[] = {{"silhouette", silhouetteScene()}, {"horizon", horizonScene()}, {"shadow", shadowScene()}};
+  } cases[] = {{"silhouette", silhouetteScene()},
+               {"horizon", horizonScene()},
+               {"shadow", shadowScene()},
+               {"crease", creaseScene()}};
   for (Case& c : cases) {
     SCOPED_TRACE(c.name);
     const ReferenceImage ref = renderReference(c.scene, kWidth, kHeight, kReferenceSide);
@@ -171,4 +189,25 @@ TEST_F(CoverageTest, PixelsNoEdgeCrossesAreBitIdenticalToTheBoxFilter) {
     }
   EXPECT_GT(differing, 0u) << "the edge pass changed nothing";
   EXPECT_EQ(unexplained, 0u) << "of " << differing << " pixels that differ from the box filter's";
+}
+
+// At the host's loop limit for the coverage filter (checkLoopLimit with two traces: 120 lights
+// and 264 objects every ray tests), the main kernel and the edge pass stay within lavapipe's
+// loop budget, which the kernels count (a pass over it throws LoopBudgetError), and the edge
+// pass changes the pixels the horizon and the silhouettes cross.
+TEST_F(CoverageTest, RendersAtTheLoopLimit) {
+  std::string text = R"(
+camera { eye = (0, 1, 6); lookat = (0, 0.6, 0); up = (0, 1, 0); fov = 40; }
+background = (0.1, 0.2, 0.6);
+)";
+  for (int i = 0; i < 256; ++i) text += "plane { normal = (0, 1, 0); distance = " + std::to_string(-i) + "; }\n";
+  for (int i = 0; i < 8; ++i) text += "sphere { center = (" + std::to_string(i - 3.5) + ", 0.5, 0); radius = 0.4; }\n";
+  for (int i = 0; i < 120; ++i) text += "light { position = (0, 10, 4); color = (0.008, 0.008, 0.008); }\n";
+  const Scene scene = parseSceneText(text, "limit.cfg");
+  ASSERT_NO_THROW(checkLoopLimit(scene, 2));
+  const std::vector<float> box = render(scene, 24, 18, OUTPUT_SHADED, 1, FILTER_BOX);
+  const std::vector<float> coverage = render(scene, 24, 18, OUTPUT_SHADED, 1, FILTER_COVERAGE);
+  size_t differing = 0;
+  for (size_t i = 0; i < box.size(); ++i) differing += box[i] != coverage[i];
+  EXPECT_GT(differing, 0u) << "the edge pass changed nothing";
 }

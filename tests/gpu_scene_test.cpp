@@ -259,23 +259,43 @@ TEST(GpuScene, MoreObjectsOrLightsThanTheKernelHoldsIsASceneError) {
 }
 
 TEST(SceneLimits, MoreIntersectionTestsPerSampleThanLavapipeLoopsOverIsASceneError) {
-  // 256 planes and 8 spheres (too few for a sphere tree): 244 lights are fine ((244 + 1) x 265
-  // = 64925), the 245th is over (65190).
+  // 256 planes and 8 spheres (too few for a sphere tree): 242 lights are fine ((242 + 1) x 267
+  // + 111 = 64992), the 243rd is over (65259).
   std::string text;
   for (int i = 0; i < 256; ++i) text += "plane { normal = (0, 1, 0); distance = " + std::to_string(-i) + "; }\n";
   for (int i = 0; i < 8; ++i) text += "sphere { center = (" + std::to_string(i) + ", 0, 0); radius = 0.5; }\n";
-  for (int i = 0; i < 244; ++i) text += "light { position = (0, 10, 0); color = (0.001, 0.001, 0.001); }\n";
+  for (int i = 0; i < 242; ++i) text += "light { position = (0, 10, 0); color = (0.001, 0.001, 0.001); }\n";
   EXPECT_NO_THROW(checkLoopLimit(parseSceneText(text, "pairs.cfg")));
   text += "light { position = (0, 10, 0); }\n";
   Scene scene = parseSceneText(text, "pairs.cfg");
   EXPECT_NO_THROW(buildGpuScene(scene, 8, 8));  // a limit of one driver, checked with the device
   try {
     checkLoopLimit(scene);
-    ADD_FAILURE() << "no error for 245 lights and 264 objects";
+    ADD_FAILURE() << "no error for 243 lights and 264 objects";
   } catch (const SceneError& e) {
-    EXPECT_EQ(std::string(e.what()), "pairs.cfg:509:1: the scene has 245 lights and 264 objects every ray tests: "
-                                     "(lights + 1) x (objects + 1) = 65190 intersection tests per sample, more than "
+    EXPECT_EQ(std::string(e.what()), "pairs.cfg:507:1: the scene has 243 lights and 264 objects every ray tests: "
+                                     "(lights + 1) x (objects + 3) + 111 = 65259 loop passes per sample, more than "
                                      "the 65000 the lavapipe driver runs");
+  }
+}
+
+TEST(SceneLimits, TheCoverageFiltersEdgePassTracesTwiceAndHalvesTheLights) {
+  // The same 264 objects: 2 x ((120 + 1) x 267 + 111) = 64836 is fine, 121 lights (65370) over.
+  std::string text;
+  for (int i = 0; i < 256; ++i) text += "plane { normal = (0, 1, 0); distance = " + std::to_string(-i) + "; }\n";
+  for (int i = 0; i < 8; ++i) text += "sphere { center = (" + std::to_string(i) + ", 0, 0); radius = 0.5; }\n";
+  for (int i = 0; i < 120; ++i) text += "light { position = (0, 10, 0); color = (0.001, 0.001, 0.001); }\n";
+  EXPECT_NO_THROW(checkLoopLimit(parseSceneText(text, "pairs.cfg"), 2));
+  text += "light { position = (0, 10, 0); }\n";
+  Scene scene = parseSceneText(text, "pairs.cfg");
+  EXPECT_NO_THROW(checkLoopLimit(scene, 1));
+  try {
+    checkLoopLimit(scene, 2);
+    ADD_FAILURE() << "no error for 121 lights and 264 objects, traced twice";
+  } catch (const SceneError& e) {
+    EXPECT_EQ(std::string(e.what()), "pairs.cfg:385:1: the scene has 121 lights and 264 objects every ray tests: "
+                                     "2 x ((lights + 1) x (objects + 3) + 111) = 65370 loop passes per edge pixel "
+                                     "of the coverage filter, more than the 65000 the lavapipe driver runs");
   }
 }
 
