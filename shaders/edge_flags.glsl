@@ -15,17 +15,19 @@
 #ifndef RAYTEX_EDGE_FLAGS_GLSL
 #define RAYTEX_EDGE_FLAGS_GLSL
 
-float edgeCone = 0.0;        // the primary ray's cone: its radius at unit distance
-uint edgeObject = EDGE_NONE; // the object (EDGE_ID) whose edge passes nearest within the pixel
-float edgeMargin = 1.0;      // its distance from the ray in cone radii (below 1: within the pixel)
-float edgeNear = 0.0;        // how far along the ray its edge begins
-bool edgeShadow = false;     // a shadow ray passed within its bundle's radius of a sphere's edge
-float shadowRadius = 0.0;    // the radius of the bundle of shadow rays at the surface
-float shadowLength = 0.0;    // the current shadow ray's distance to its light
-float planeNearT = T_MAX;    // the primary ray's two nearest plane hits, and their planes
-float planeNextT = T_MAX;
-uint planeNear = 0u;
-uint planeNext = 0u;
+// Set by startEdgeFlags where EDGE_FLAGS, and read only there: no initialisers, which would be
+// stores every invocation of every kernel makes.
+float edgeCone;     // the primary ray's cone: its radius at unit distance
+uint edgeObject;    // the object (EDGE_ID) whose edge passes nearest within the pixel
+float edgeMargin;   // its distance from the ray in cone radii (below 1: within the pixel)
+float edgeNear;     // how far along the ray its edge begins
+bool edgeShadow;    // a shadow ray passed within its bundle's radius of a sphere's edge
+float shadowRadius; // the radius of the bundle of shadow rays at the surface (albedoAt)
+float shadowLength; // the current shadow ray's distance to its light (visibleShare)
+float planeNearT;   // the primary ray's two nearest plane hits, and their planes
+float planeNextT;
+uint planeNear;
+uint planeNext;
 
 // |distance of the sphere's centre from the line o + t d (unit d) - r| in units of `radius`
 // (from the discriminant, without a square root: |r^2 - h^2| against radius (2r + radius));
@@ -43,9 +45,14 @@ void startEdgeFlags(vec2 film) {
   edgeCone = 0.78 * length(primaryRay(film + vec2(1.0, 0.0)) - primaryRay(film));
   edgeObject = EDGE_NONE;
   edgeMargin = 1.0;
+  edgeNear = 0.0;
   edgeShadow = false;
+  shadowRadius = 0.0;
+  shadowLength = 0.0;
   planeNearT = T_MAX;
   planeNextT = T_MAX;
+  planeNear = 0u;
+  planeNext = 0u;
 }
 
 // A primary ray from o along unit d, nearest hit so far at tMax, tests sphere `index`.

@@ -66,7 +66,7 @@ float visibleShare(vec3 o, vec3 l, float dist, uint light, out uint passes) {
 #ifdef RAYTEX_EDGE_PASS
   return litShare(o, l, dist, light, passes);
 #else
-  shadowLength = dist;
+  if (EDGE_FLAGS) shadowLength = dist;
   return occluded(o, l, dist, light, passes) ? 0.0 : 1.0;
 #endif
 }

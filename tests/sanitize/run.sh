@@ -27,4 +27,5 @@ export RAYTEX_SANITIZED=1  # tests/cli_test.sh, output_test.sh: skip the address
 SWEEPS='BakedKernelsMatchTheUniformBuffers|(CourseScenes|Fields)RenderWhatTheOneKernelRenders|NoiseFilterTest|Shadow(Lists|Grids)RenderWhatTheTreeWalkRenders|RendersWhatTheLoopOverEverySphereRenders'
 # Image-quality comparisons of kernel variants and filters (the same host path as the rest):
 SWEEPS+='|ImageFilterTest|OctaveClampingTest|BoxFilterBeatsPointSampling|HorizonBandBoxBeatsPointSampling|FullBlocksRenderTheirLastItems|CourseMaterialsMatchTheUnspecialisedKernel|AllScenesFiniteWhenSupersampledAndFiltered|FilteredCheckerBeatsSupersamplingAtTheHorizon|IdentityPlacementIsExact|TileKernelsWriteThePassesOfTheOneKernel'
+SWEEPS+='|EachEdgeAloneMatchesTheReferencePixelByPixel|CourseSceneIsCloserToTheReferenceThanTheBoxFilter'
 ctest --test-dir "$build" -LE fuzz -E "^cli\$|$SWEEPS" --output-on-failure -j3
