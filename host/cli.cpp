@@ -115,7 +115,7 @@ const CliOption kOptions[] = {
      [](CliArgs& c, const std::string& f, const std::string& v) { c.render.samplesPerPixel = parseSpp(f, v); }},
     {"--filter", nullptr, "MODE", kAll,
      "texture filtering: point (default: sample at the hit), box (average textures over each sample's "
-     "footprint from ray differentials) or coverage (box, and where a silhouette, the horizon or a shadow's "
+     "footprint from ray differentials) or coverage (box, and where a silhouette, the horizon, a crease or a shadow's "
      "edge crosses a pixel, each side weighted by its share of the pixel; one sample per pixel)",
      [](CliArgs& c, const std::string& f, const std::string& v) { c.render.filter = parseFilter(f, v); }},
     {"--reference", nullptr, nullptr, kRender,
@@ -132,7 +132,8 @@ const CliOption kOptions[] = {
      "print one JSON object instead of the table (keys: bench in docs/performance.md, diff in docs/cli.md)",
      [](CliArgs& c, const std::string&, const std::string&) { c.bench.json = c.diff.json = true; }},
     {"--stats", nullptr, nullptr, kRender | kView,
-     "render: print one line of phase times in milliseconds; view: frame and material-switch times at exit",
+     "render: print one line of phase times in milliseconds (with --filter coverage, also the pixels its edge "
+     "pass shaded again); view: frame and material-switch times at exit",
      [](CliArgs& c, const std::string&, const std::string&) { c.render.stats = true; }},
     {"--validate", nullptr, nullptr, kAll, "enable Vulkan validation layers (also RAYTEX_VALIDATION=1)",
      [](CliArgs& c, const std::string&, const std::string&) { c.render.validate = true; }},
