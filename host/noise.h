@@ -9,6 +9,8 @@
 // - The permutation: noise_permutation.h.
 #pragma once
 
+#include "common.h"
+
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
@@ -16,9 +18,8 @@
 #include <cstdint>
 
 // The most octaves turbulence()/dturbulence() sum (larger counts are clamped;
-// octave 16 already has 65536x the base frequency). Same as NOISE_MAX_OCTAVES in
-// shaders/common.h.
-constexpr int kNoiseMaxOctaves = 16;
+// octave 16 already has 65536x the base frequency): the kernel's NOISE_MAX_OCTAVES.
+constexpr int kNoiseMaxOctaves = int(NOISE_MAX_OCTAVES);
 
 // The gradient the hash h selects (only the low 4 bits are used).
 glm::dvec3 noiseGradientVector(uint32_t h);

@@ -133,7 +133,7 @@ using uvec4 = glm::uvec4;
 // count their loops' passes per group and, before the driver's limit, stop and set
 // STATUS_LOOP_BUDGET in BINDING_STATUS; the host reports it.
 #define STATUS_LOOP_BUDGET 1u  // bit of word 0: some group's loops passed the budget
-// Octave counts above this are clamped (kNoiseMaxOctaves in host/noise.h).
+// Octave counts above this are clamped (on the host: kNoiseMaxOctaves, host/noise.h).
 #define NOISE_MAX_OCTAVES 16u
 // Loop passes per sample bounded by constants, reserved for in the budget: the noise kinds' octave
 // loops (each runs in every SIMD group with its kind, at most NOISE_MAX_OCTAVES passes, and one

@@ -52,7 +52,8 @@ float coverGap(uint id, vec3 o, vec2 film) {
   vec3 d = primaryRayUnnormalized(film);
   if (edgeKind(id) == EDGE_CREASE) {
     uint mask = (1u << EDGE_PLANE_SHIFT) - 1u;
-    vec3 m = creaseNormal(o, planeAt((id >> EDGE_PLANE_SHIFT) & mask).normalDistance, planeAt(id & mask).normalDistance);
+    vec3 m = creaseNormal(o, planeAt((id >> EDGE_PLANE_SHIFT) & mask).normalDistance,
+                          planeAt(id & mask).normalDistance);
     return dot(m, d) / (length(m) * length(d));
   }
   if (edgeKind(id) == HIT_PLANE) {

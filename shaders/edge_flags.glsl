@@ -5,8 +5,8 @@
 // the cone's radius of r) and in front of the hit, it is the pixel's edge object, the nearest
 // such edge if there are several; so is a plane whose horizon passes within the pixel, where
 // the ray sees the plane or nothing, and the line where the plane the ray sees meets the next
-// plane along it (a crease, EDGE_CREASE). Every sphere a shadow ray tests is measured alike against
-// the bundle of shadow rays from the pixel's footprint to the light. The main kernel lists the
+// plane along it (a crease, EDGE_CREASE). Every sphere a shadow ray tests is measured alike
+// against the bundle of shadow rays from the pixel's footprint to the light. The main kernel lists the
 // pixels with an edge object or a shadow's edge (BINDING_EDGE_LIST) for the edge pass
 // (coverage.glsl). Spheres a tree walk or a list skips are not measured: an edge along such a
 // sphere's box, or just outside a shadow list's cell, is missed (docs/accuracy.md).
