@@ -21,6 +21,24 @@
 #include <string>
 #include <vector>
 
+namespace {
+
+// One frame's GPU time: one dispatch (and the coverage filter's edge pass), or, `perSample`, the
+// N x N samples one dispatch each, as raytex render renders the coverage filter's (headless.cpp).
+double renderTimed(Renderer& r, bool perSample, uint32_t samples) {
+  if (!perSample) {
+    renderFrame(r);
+    return r.lastFrameMs;
+  }
+  double ms = 0.0;
+  for (uint32_t i = 0; i < samples; ++i) {
+    renderSample(r, i);
+    ms += r.lastFrameMs;
+  }
+  return ms;
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   if (argc < 6) {
@@ -33,8 +51,7 @@ int main(int argc, char** argv) {
   struct Method {
     const char* name;
     uint32_t filter;
-    uint32_t maxSide;  // coverage renders one sample per pixel
-  } methods[] = {{"point", FILTER_POINT, 8}, {"box", FILTER_BOX, 8}, {"coverage", FILTER_COVERAGE, 1}};
+  } methods[] = {{"point", FILTER_POINT}, {"box", FILTER_BOX}, {"coverage", FILTER_COVERAGE}};
   const uint32_t sides[] = {1, 2, 4, 8};  // 1, 4, 16, 64 samples per pixel
 
   std::string csvPath = outDir + "/accuracy.csv";
@@ -47,7 +64,8 @@ int main(int argc, char** argv) {
   try {
     Renderer r;
     createRenderer(r, {});
-    r.coverage = true;  // room for the coverage filter's edge list
+    r.coverage = true;    // room for the coverage filter's edge list
+    r.accumulate = true;  // and for its sums, one sample per dispatch
     printf("device: %s; %dx%d; GPU time median of %d frames; reference %dx%d spp float64\n",
            r.device.properties.deviceName, width, height, runs, referenceSide, referenceSide);
     for (int a = 5; a < argc; ++a) {
@@ -69,18 +87,16 @@ int main(int argc, char** argv) {
       uploadScene(r, g);
       for (const Method& m : methods) {
         for (uint32_t side : sides) {
-          if (side > m.maxSide) continue;
+          const bool perSample = m.filter == FILTER_COVERAGE && side > 1;
           KernelOptions kernel;
           kernel.textureFilter = m.filter;
           kernel.samplesPerSide = side;
+          kernel.progressive = perSample;
           kernel.bakeValues = true;  // as raytex render builds it
           preparePipeline(r, kernelKey(g, kernel));
-          renderFrame(r);  // warm-up: lavapipe compiles at the first dispatch
+          renderTimed(r, perSample, side * side);  // warm-up: lavapipe compiles at the first dispatch
           std::vector<double> ms;
-          for (int i = 0; i < runs; ++i) {
-            renderFrame(r);
-            ms.push_back(r.lastFrameMs);
-          }
+          for (int i = 0; i < runs; ++i) ms.push_back(renderTimed(r, perSample, side * side));
           readbackFrame(r);
           double error = rmseAgainstReference(framePixels(r), ref);
           std::string image = name + "_" + m.name + "_" + std::to_string(side * side) + ".png";

@@ -116,7 +116,7 @@ const CliOption kOptions[] = {
     {"--filter", nullptr, "MODE", kAll,
      "texture filtering: point (default: sample at the hit), box (average textures over each sample's "
      "footprint from ray differentials) or coverage (box, and where a silhouette, the horizon, a crease or a shadow's "
-     "edge crosses a pixel, each side weighted by its share of the pixel; one sample per pixel)",
+     "edge crosses a sample's cell, each side weighted by its share of the cell: the pixel at 1 spp)",
      [](CliArgs& c, const std::string& f, const std::string& v) { c.render.filter = parseFilter(f, v); }},
     {"--reference", nullptr, nullptr, kRender,
      "render on the CPU in float64 (slow; the accuracy reference), no Vulkan",
@@ -133,7 +133,7 @@ const CliOption kOptions[] = {
      [](CliArgs& c, const std::string&, const std::string&) { c.bench.json = c.diff.json = true; }},
     {"--stats", nullptr, nullptr, kRender | kView,
      "render: print one line of phase times in milliseconds (with --filter coverage, also the pixels its edge "
-     "pass shaded again); view: frame and material-switch times at exit",
+     "pass shaded again, or the samples above 1 spp); view: frame and material-switch times at exit",
      [](CliArgs& c, const std::string&, const std::string&) { c.render.stats = true; }},
     {"--validate", nullptr, nullptr, kAll, "enable Vulkan validation layers (also RAYTEX_VALIDATION=1)",
      [](CliArgs& c, const std::string&, const std::string&) { c.render.validate = true; }},
@@ -428,13 +428,8 @@ RenderJob resolveJob(const RenderOptions& options, const RenderSettings& s, uint
   job.samplesPerSide = uint32_t(std::lround(std::sqrt(double(job.samplesPerPixel))));
   job.filter = resolvedFilter(options, s);
   for (Pass p : options.passes)
-    if (passInfo(p).boxFilterOnly && job.filter != TextureFilter::Box)
+    if (passInfo(p).boxFilterOnly && job.filter == TextureFilter::Point)
       throw UsageError("--aov " + std::string(passInfo(p).name) + " comes from the box filter: add --filter box");
-  if (job.filter == TextureFilter::Coverage && job.samplesPerPixel != 1)
-    throw UsageError("--filter coverage renders one sample per pixel: --spp " + std::to_string(job.samplesPerPixel) +
-                     " needs --filter box");
-  if (job.filter == TextureFilter::Coverage && !options.passes.empty())
-    throw UsageError("--aov comes from the point or box kernel, not --filter coverage");
   if (uint64_t(job.width) * job.height > kMaxPixels)
     throw UsageError(std::to_string(job.width) + "x" + std::to_string(job.height) + " exceeds the limit of " +
                      std::to_string(kMaxPixels) + " pixels (8192x8192)");

@@ -40,12 +40,14 @@ GpuScene prepareScene(const RenderOptions& options, Scene* scene, HeadlessRender
 // Whether samples go one dispatch each: where together they would pass lavapipe's loop limit
 // (kMaxLoopIterations), the progressive kernel adds them one at a time, the same image bit for
 // bit. A sphere tree's walks are not known before they run: its samples always go one at a time.
-// With passes the kernel traces the pixel centre once more.
+// With passes the kernel traces the pixel centre once more. The coverage filter's samples always
+// go one at a time: each one's edge pass follows its main kernel (coverage.glsl).
 bool samplesPerDispatch(const Renderer& renderer, const Scene& scene, const GpuScene& gpuScene, const RenderJob& job) {
+  if (job.samplesPerPixel <= 1) return false;
+  if (renderer.coverage) return true;
   const uint32_t traces = job.samplesPerPixel + (renderer.passMask != 0 ? 1 : 0);
-  return renderer.device.lavapipe && job.samplesPerPixel > 1 &&
-         (gpuScene.shape.sphereTree != SPHERE_TREE_NONE ||
-          traces * loopIterationsPerSample(scene) > kMaxLoopIterations);
+  return renderer.device.lavapipe && (gpuScene.shape.sphereTree != SPHERE_TREE_NONE ||
+                                      traces * loopIterationsPerSample(scene) > kMaxLoopIterations);
 }
 
 // The kernel built around the scene's values (the camera is fixed), and tile kernels where they
@@ -65,16 +67,20 @@ void preparePipelines(Renderer& renderer, const GpuScene& gpuScene, const Render
   if (tileKernelsPay(plan, samples)) prepareTileKernels(renderer, key, plan);
 }
 
-// One band of the image, every sample; its GPU time.
-double renderBand(Renderer& renderer, uint32_t firstRow, bool perSample, uint32_t samplesPerPixel) {
+// One band of the image, every sample; its GPU time. Adds the samples the coverage filter's
+// edge pass shaded again to `edgeSamples`.
+double renderBand(Renderer& renderer, uint32_t firstRow, bool perSample, uint32_t samplesPerPixel,
+                  uint64_t& edgeSamples) {
   selectBand(renderer, firstRow);
   if (!perSample) {
     renderFrame(renderer);
+    edgeSamples += edgePixelCount(renderer);
     return renderer.lastFrameMs;
   }
   double ms = 0.0;
   for (uint32_t i = 0; i < samplesPerPixel; ++i) {
     renderSample(renderer, i);
+    edgeSamples += edgePixelCount(renderer);
     ms += renderer.lastFrameMs;
   }
   return ms;
@@ -126,14 +132,15 @@ void renderImage(Renderer& renderer, bool perSample, uint32_t extraFrames, Headl
   const RenderJob& job = out->job;
   const uint32_t bands = bandCount(renderer);
   for (uint32_t b = 0; b < bands; ++b) {
-    renderBand(renderer, b * renderer.bandRows, perSample, job.samplesPerPixel);
-    out->edgePixels += edgePixelCount(renderer);
+    renderBand(renderer, b * renderer.bandRows, perSample, job.samplesPerPixel, out->edgeSamples);
     if (bands > 1) keepBand(renderer, out, output);
   }
   out->times.firstDispatch = lapMs(t);  // several bands: their readbacks and writes too
   for (uint32_t i = 0; i < extraFrames; ++i) {
     double ms = 0.0;
-    for (uint32_t b = 0; b < bands; ++b) ms += renderBand(renderer, b * renderer.bandRows, perSample, job.samplesPerPixel);
+    uint64_t edgeSamples = 0;
+    for (uint32_t b = 0; b < bands; ++b)
+      ms += renderBand(renderer, b * renderer.bandRows, perSample, job.samplesPerPixel, edgeSamples);
     out->frameMs.push_back(ms);
   }
   t = std::chrono::steady_clock::now();  // the extra frames are not part of a render

@@ -33,7 +33,7 @@ struct HeadlessRender {
   std::string deviceName;
   size_t nonFinite = 0;  // colour values written as black
   uint64_t imageBytes = 0;  // GPU memory of the image textures: the sum of their chains
-  uint64_t edgePixels = 0;  // pixels the coverage filter's edge pass shaded again
+  uint64_t edgeSamples = 0;  // samples the coverage filter's edge pass shaded again (pixels at 1 spp)
 };
 
 // Renders options.scene on Vulkan, then `extraFrames` more frames of the same image (timed),

@@ -98,7 +98,8 @@ void runRender(const RenderOptions& options) {
          double(render.imageBytes) / (1024.0 * 1024.0), render.job.width, render.job.height,
          render.job.samplesPerPixel);
   if (render.job.filter == TextureFilter::Coverage)
-    printf(" | %llu edge pixels", static_cast<unsigned long long>(render.edgePixels));
+    printf(" | %llu edge %s", static_cast<unsigned long long>(render.edgeSamples),
+           render.job.samplesPerPixel == 1 ? "pixels" : "samples");
   printf("\n");
 }
 

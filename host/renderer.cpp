@@ -429,13 +429,17 @@ void bindAndDispatch(Renderer& r, VkCommandBuffer cmd, VkPipeline pipeline, uint
 
 // The edge pass of FILTER_COVERAGE's `key` (its main kernel's, or the tile kernels' base key),
 // or none for the other filters.
-void prepareEdgePass(Renderer& r, const KernelKey& key) {
-  r.edgePipeline = VK_NULL_HANDLE;
-  if (key.textureFilter != FILTER_COVERAGE) return;
+KernelKey edgePassKey(const KernelKey& key) {
   KernelKey edge = key;
   edge.edgePass = 1;
   edge.tileOrder = 0;
-  const CachedPipeline& p = cachedPipeline(r, edge);
+  return edge;
+}
+
+void prepareEdgePass(Renderer& r, const KernelKey& key) {
+  r.edgePipeline = VK_NULL_HANDLE;
+  if (key.textureFilter != FILTER_COVERAGE) return;
+  const CachedPipeline& p = cachedPipeline(r, edgePassKey(key));
   r.edgePipeline = p.pipeline;
   r.edgeKey = p.key;
 }
@@ -504,18 +508,24 @@ void prepareTileKernels(Renderer& r, const KernelKey& key, const TilePlan& plan)
 }
 
 bool pipelineWarm(const Renderer& r, const KernelKey& key) {
+  if (key.textureFilter == FILTER_COVERAGE && !key.edgePass && !pipelineWarm(r, edgePassKey(key))) return false;
   for (const CachedPipeline& p : r.pipelines)
     if (p.key == budgeted(r, key)) return p.dispatched;
   return false;
 }
 
 void warmPipeline(Renderer& r, const KernelKey& key) {
+  if (key.textureFilter == FILTER_COVERAGE && !key.edgePass) warmPipeline(r, edgePassKey(key));
   CachedPipeline& p = cachedPipeline(r, key);
   if (p.dispatched) return;
-  // One workgroup past the image's right edge (a tile kernel's: tile TILE_ORDER_NONE): nothing
-  // is written, but lavapipe compiles the kernel for the bound resources.
+  // One workgroup past the image's right edge (a tile kernel's: tile TILE_ORDER_NONE; the edge
+  // pass's: past its list's end): nothing is written, but lavapipe compiles the kernel for the
+  // bound resources.
+  const uint32_t past = p.key.edgePass ? uint32_t(r.width) * r.bandRows / EDGE_GROUP_SIZE + 1
+                        : p.key.tileOrder ? 0
+                                          : (r.width + WORKGROUP_X - 1) / WORKGROUP_X;
   VkCommandBuffer cmd = beginCommands(r.device);
-  bindAndDispatch(r, cmd, p.pipeline, p.key.tileOrder ? 0 : (r.width + WORKGROUP_X - 1) / WORKGROUP_X, 1, 1, 0);
+  bindAndDispatch(r, cmd, p.pipeline, past, 1, 1, 0);
   submitAndWait(r.device, cmd);
   p.dispatched = true;
 }

@@ -75,6 +75,7 @@ struct ImageLimits {
   PackOptions pack;  // every material (a key switches to it), mip chains for the filtered kernel
   uint32_t maxImageDimension2D = 0;  // the device's
   bool lavapipe = false;  // its driver's loop limit applies (scene_limits.h)
+  uint32_t traces = 1;    // traces a sample's dispatches nest: 2 with the coverage filter's edge pass
 };
 
 int materialIndex(const Scene& scene, const char* name) {
@@ -190,7 +191,7 @@ void reloadIfChanged(ViewerState& state, const std::string& path, const ReadPoli
   try {
     Scene scene = parseSceneFile(path, policy);
     times = fileTimes(scene);
-    if (limits.lavapipe) checkLoopLimit(scene);
+    if (limits.lavapipe) checkLoopLimit(scene, limits.traces);
     GpuScene gpuScene = buildGpuScene(scene, 1, 1, limits.pack);
     std::string over = imagesOverDeviceLimits(gpuScene.images, limits.maxImageDimension2D);
     if (!over.empty()) throw VulkanError(over);
@@ -349,8 +350,6 @@ void loadScene(Viewer& v, const RenderOptions& options) {
   ViewerState& state = v.state;
   state.scene = parseSceneFile(options.scene, ReadPolicy{options.allowRead});
   checkOutput(options.output, state.scene);  // F12 writes -o
-  if (resolvedFilter(options, state.scene.render) == TextureFilter::Coverage)
-    throw UsageError("view shows the point and box filters: render --filter coverage with raytex render");
   v.job = resolveJob(options, state.scene.render, kViewerSamplesPerPixel);
   v.target = v.job.samplesPerSide * v.job.samplesPerSide;
   v.pack.mipmaps = v.job.filter != TextureFilter::Point;  // mip chains only for the filtered kernel
@@ -380,8 +379,9 @@ void openViewer(Viewer& v, const RenderOptions& options) {
   device.instanceExtensions = windowInstanceExtensions();
   device.presentSupport = windowPresentSupport;
   v.renderer.accumulate = true;
+  v.renderer.coverage = v.job.filter == TextureFilter::Coverage;
   createRenderer(v.renderer, device);
-  if (v.renderer.device.lavapipe) checkLoopLimit(v.state.scene);
+  if (v.renderer.device.lavapipe) checkLoopLimit(v.state.scene, v.renderer.coverage ? 2 : 1);
   createSwapchain(v.window, v.renderer.device);
   v.renderer.displayBgra = windowBgra(v.window);
 }
@@ -469,7 +469,7 @@ void pollAndTitle(Viewer& v, const RenderOptions& options) {
   if (now - v.lastTitle <= std::chrono::milliseconds(250)) return;
   const VkPhysicalDeviceLimits& device = v.renderer.device.properties.limits;
   reloadIfChanged(v.state, options.scene, ReadPolicy{options.allowRead}, v.fileTimes,
-                  {v.pack, device.maxImageDimension2D, v.renderer.device.lavapipe});
+                  {v.pack, device.maxImageDimension2D, v.renderer.device.lavapipe, v.renderer.coverage ? 2u : 1u});
   const double frameMs = v.stats.frameMs.empty() ? 0.0 : v.stats.frameMs.back();
   glfwSetWindowTitle(v.window.window, title(v.state, v.samples, v.target, frameMs, v.renderer.lastFrameMs).c_str());
   v.lastTitle = now;

@@ -14,7 +14,9 @@
 // pixels an edge may cross with the edge's object (edge_flags.glsl); this pass shades each
 // again: the surface on the centre's side of the edge and the one across it, each at the middle
 // of its part of the pixel, mixed by their shares, with every light weighted by its lit share.
-// Textures keep the box filter. Approximations (docs/accuracy.md, "The coverage filter"): two
+// Textures keep the box filter. With N x N samples per pixel each sample is one dispatch of the
+// main kernel and this pass (the progressive kernels), and "pixel" above is the sample's cell,
+// 1/N of a pixel wide. Approximations (docs/accuracy.md, "The coverage filter"): two
 // surfaces per pixel (the edge nearest the centre), straight edges within a pixel, the
 // occluders' shares multiplied as if independent; shadows of planes, and the edges where a
 // sphere cuts a plane or another sphere, not covered.
@@ -24,8 +26,8 @@
 #ifndef RAYTEX_COVERAGE_GLSL
 #define RAYTEX_COVERAGE_GLSL
 
-// The share of the pixel square (side 1, centred on the sample) where value + gradient . x < 0,
-// x the offset from the centre in pixels: the area cut off by a straight edge (the
+// The share of the cell (a square of side 1: the pixel, or the sample's cell in its own units,
+// centred on the sample) where value + gradient . x < 0, x the offset from the centre: the area cut off by a straight edge (the
 // distribution of x . n over the square is a trapezoid; this is its integral).
 float shareBelow(float value, vec2 gradient) {
   float len = length(gradient);
@@ -68,24 +70,27 @@ float coverGap(uint id, vec3 o, vec2 film) {
   return (along > 0.0 ? length(f - along * u) : length(f)) - cr.w;
 }
 
-// The gap's change over one pixel along x and y (central differences: exact for the horizon
-// and creases, within the silhouette's curvature for spheres).
-vec2 coverGapGradient(uint id, vec3 o, vec2 film) {
-  return vec2(coverGap(id, o, film + vec2(0.5, 0.0)) - coverGap(id, o, film - vec2(0.5, 0.0)),
-              coverGap(id, o, film + vec2(0.0, 0.5)) - coverGap(id, o, film - vec2(0.0, 0.5)));
+// The gap's change over one sample cell, `spacing` pixels wide, along x and y (central
+// differences: exact for the horizon and creases, within the silhouette's curvature for
+// spheres).
+vec2 coverGapGradient(uint id, vec3 o, vec2 film, float spacing) {
+  float h = 0.5 * spacing;
+  return vec2(coverGap(id, o, film + vec2(h, 0.0)) - coverGap(id, o, film - vec2(h, 0.0)),
+              coverGap(id, o, film + vec2(0.0, h)) - coverGap(id, o, film - vec2(0.0, h)));
 }
 
-// The share of the pixel square on the centre's side of the edge of `id`, and a film position in
-// the middle of each side's part (along the edge's normal through the centre).
-float edgeSplit(uint id, vec3 o, vec2 film, out vec2 centreSide, out vec2 farSide) {
+// The share of the sample's cell (`spacing` pixels wide, centred on `film`) on the centre's side
+// of the edge of `id`, and a film position in the middle of each side's part (along the edge's
+// normal through the centre).
+float edgeSplit(uint id, vec3 o, vec2 film, float spacing, out vec2 centreSide, out vec2 farSide) {
   float g = coverGap(id, o, film);
-  vec2 gradient = coverGapGradient(id, o, film);
+  vec2 gradient = coverGapGradient(id, o, film, spacing);
   float len = max(length(gradient), 1.0e-20);
   vec2 n = (g < 0.0 ? gradient : -gradient) / len;  // from the centre's side towards the other
-  float distance = abs(g) / len;
-  float reach = 0.5 * (abs(n.x) + abs(n.y));  // the square's extent along n
-  centreSide = film + n * (0.5 * (min(distance, reach) - reach));
-  farSide = film + n * (0.5 * (min(distance, reach) + reach));
+  float distance = abs(g) / len;  // in cells
+  float reach = 0.5 * (abs(n.x) + abs(n.y));  // the cell's extent along n
+  centreSide = film + n * (0.5 * (min(distance, reach) - reach) * spacing);
+  farSide = film + n * (0.5 * (min(distance, reach) + reach) * spacing);
   float below = shareBelow(g, gradient);
   return g < 0.0 ? below : 1.0 - below;
 }

@@ -38,11 +38,12 @@ float sphereMargin(vec3 o, vec3 d, vec4 cr, float along, float radius) {
   return abs(disc) / max(radius * (2.0 * cr.w + radius), 1.0e-30);
 }
 
-// Before a primary ray is traced through `film`: its cone reaches the pixel's corners (half a
-// diagonal of the step to the next pixel, with a margin of 10 %).
-void startEdgeFlags(vec2 film) {
+// Before a primary ray is traced through `film`: its cone reaches the corners of its sample's
+// cell, `spacing` pixels wide (half a diagonal of the step to the next sample, with a margin of
+// 10 %).
+void startEdgeFlags(vec2 film, float spacing) {
   if (!EDGE_FLAGS) return;
-  edgeCone = 0.78 * length(primaryRay(film + vec2(1.0, 0.0)) - primaryRay(film));
+  edgeCone = 0.78 * length(primaryRay(film + vec2(spacing, 0.0)) - primaryRay(film));
   edgeObject = EDGE_NONE;
   edgeMargin = 1.0;
   edgeNear = 0.0;

@@ -226,7 +226,7 @@ vec3 albedoAt(Hit hit, Surface s, Material m, vec3 origin, vec2 film, float spac
 // Linear radiance of the sample at `film` (pixel units); `spacing` between samples.
 vec3 radiance(vec3 origin, vec2 film, float spacing) {
   vec3 dir = primaryRay(film);
-  startEdgeFlags(film);
+  startEdgeFlags(film, spacing);
   Hit hit = closestHit(origin, dir);
   endPrimaryEdges(origin, dir, hit);
   if (hit.kind == HIT_NONE) return frame.background.rgb;
@@ -249,12 +249,16 @@ vec3 radiance(vec3 origin, vec2 film, float spacing) {
 // then, where N > 1 and this dispatch writes the passes (not after progressive sample 0), the
 // pixel centre once more, with the footprint of one pixel, for the passes alone. The last
 // sample traced leaves its passes (passes.glsl): the centre's. One call of radiance, in a
-// do-while (as RAYTEX_SUPERSAMPLE's). Returns the samples traced.
-uint traceWithPasses(vec3 origin, uvec2 pixel, inout vec3 sum) {
+// do-while (as RAYTEX_SUPERSAMPLE's). Returns the samples traced; `listed`: whether the coverage
+// filter's edge pass shades the last shaded sample again (EDGE_FLAGS; its edges, not the
+// centre's), and `object`, that sample's edge object.
+uint traceWithPasses(vec3 origin, uvec2 pixel, inout vec3 sum, out bool listed, out uint object) {
   const uint n = SAMPLES_PER_SIDE;
   const uint shaded = PROGRESSIVE ? 1u : n * n;
   const uint traced = shaded + ((n > 1u && (!PROGRESSIVE || frame.sampleIndex == 0u)) ? 1u : 0u);
   uint i = 0u;
+  listed = false;
+  object = EDGE_NONE;
   do {
     uint k = PROGRESSIVE ? frame.sampleIndex : i;
     passesOnly = i == shaded;
@@ -262,6 +266,10 @@ uint traceWithPasses(vec3 origin, uvec2 pixel, inout vec3 sum) {
     vec2 film = passesOnly ? vec2(pixel) + 0.5 : vec2(pixel) + (vec2(k % n, k / n) + 0.5) / float(n);
     vec3 r = radiance(origin, film, passesOnly ? 1.0 : 1.0 / float(n));
     if (!passesOnly) sum += r;
+    if (EDGE_FLAGS && !passesOnly) {
+      listed = edgeObject != EDGE_NONE || edgeShadow;
+      object = edgeObject;
+    }
   } while (++i < traced);
   return traced;
 }
@@ -283,9 +291,9 @@ vec4 debugOutput(vec3 origin, vec2 film) {
 
 // Appends the pixel (its index in the band) and its edge object to the coverage filter's list,
 // growing the edge pass's indirect dispatch to cover it.
-void listEdgePixel(uint outputIndex) {
+void listEdgePixel(uint outputIndex, uint object) {
   uint slot = atomicAdd(edgeHeader.w, 1u);
-  edgeEntries[slot] = uvec2(outputIndex, edgeObject);
+  edgeEntries[slot] = uvec2(outputIndex, object);
   atomicMax(edgeHeader.x, slot / EDGE_GROUP_SIZE + 1u);
 }
 
@@ -314,29 +322,41 @@ uvec2 invocationPixel() {
 // The coverage filter's edge pass: invocation i of the indirect dispatch shades listed pixel i
 // again (coverage.glsl): the centre's side of its edge and the far side, each at the middle of
 // its part, mixed by their shares; a pixel listed for a shadow's edge alone, at its centre.
+// Progressive (N x N samples, one per dispatch), it shades sample frame.sampleIndex's cell and
+// adds it to the running sum, which the main kernel left as it was for listed pixels.
 // Invocations past the list's end shade its last pixel and store nothing.
 void main() {
   cacheScene();
   uint slot = gl_WorkGroupID.x * EDGE_GROUP_SIZE + gl_LocalInvocationIndex;
   uint count = edgeHeader.w;
   bool inside = slot < count;
-  uvec2 entry = edgeEntries[min(slot, count - 1u)];
+  uvec2 entry = edgeEntries[min(slot, max(count, 1u) - 1u)];
   uint outputIndex = entry.x;
   uvec2 pixel = uvec2(outputIndex % frame.width, outputIndex / frame.width + frame.rowOffset);
   primaryTile = (pixel.y / TILE_SIZE) * frame.tileColumns + pixel.x / TILE_SIZE;
   shadowCell = (pixel.y / (TILE_SIZE * SHADOW_CELL)) * frame.shadowColumns + pixel.x / (TILE_SIZE * SHADOW_CELL);
   vec3 origin = frame.eye.xyz;
-  vec2 film = vec2(pixel) + 0.5;
+  const uint n = SAMPLES_PER_SIDE;
+  uint k = PROGRESSIVE ? frame.sampleIndex : 0u;
+  vec2 film = vec2(pixel) + (vec2(k % n, k / n) + 0.5) / float(n);
+  float spacing = 1.0 / float(n);
   vec2 centreSide = film, farSide = film;
-  float share = entry.y != EDGE_NONE ? edgeSplit(entry.y, origin, film, centreSide, farSide) : 1.0;
+  float share = entry.y != EDGE_NONE ? edgeSplit(entry.y, origin, film, spacing, centreSide, farSide) : 1.0;
   // One call of radiance, in a do-while (as RAYTEX_SUPERSAMPLE's).
   vec3 sum = vec3(0.0);
   uint i = 0u;
   do {
-    sum += (i == 0u ? share : 1.0 - share) * radiance(origin, i == 0u ? centreSide : farSide, 1.0);
+    sum += (i == 0u ? share : 1.0 - share) * radiance(origin, i == 0u ? centreSide : farSide, spacing);
   } while (++i < (share < 1.0 ? 2u : 1u));
   checkLoopBudget(2u);
-  if (inside) outputPixels[outputIndex] = vec4(sum, 1.0);
+  if (!inside) return;
+  if (!PROGRESSIVE) {
+    outputPixels[outputIndex] = vec4(sum, 1.0);
+    return;
+  }
+  sum += frame.sampleIndex == 0u ? vec3(0.0) : accumulation[outputIndex].rgb;
+  accumulation[outputIndex] = vec4(sum, 1.0);
+  imageStore(displayImage, ivec2(pixel), uvec4(displayPixel(sum * frame.sampleWeight)));
 }
 #else
 void main() {
@@ -364,8 +384,12 @@ void main() {
   if (PROGRESSIVE) sum = frame.sampleIndex == 0u ? vec3(0.0) : accumulation[outputIndex].rgb;
 #if defined(RAYTEX_AOV)
   // The shaded samples and the passes (progressive: in the dispatch of sample 0).
-  checkLoopBudget(traceWithPasses(origin, pixel, sum));
+  bool listed;
+  uint object;
+  checkLoopBudget(traceWithPasses(origin, pixel, sum, listed, object));
   if (inside && (!PROGRESSIVE || frame.sampleIndex == 0u)) writePasses(outputIndex);
+  if (listed && inside) listEdgePixel(outputIndex, object);
+  inside = inside && !(PROGRESSIVE && listed);
 #elif defined(RAYTEX_SUPERSAMPLE)
   // N x N samples in one dispatch (N > 1, not progressive). No for loop: lavapipe tests a
   // loop's condition at the top of each pass and leaves only when no lane is left, so a for
@@ -385,7 +409,10 @@ void main() {
   uint k = PROGRESSIVE ? frame.sampleIndex : 0u;
   sum += radiance(origin, vec2(pixel) + (vec2(k % n, k / n) + 0.5) / float(n), 1.0 / float(n));
   checkLoopBudget(1u);
-  if (EDGE_FLAGS && inside && (edgeObject != EDGE_NONE || edgeShadow)) listEdgePixel(outputIndex);
+  // A listed pixel is the edge pass's to write (its sample added to the running sum there).
+  bool listed = EDGE_FLAGS && (edgeObject != EDGE_NONE || edgeShadow);
+  if (listed && inside) listEdgePixel(outputIndex, edgeObject);
+  inside = inside && !(PROGRESSIVE && listed);
 #endif
   if (PROGRESSIVE) {
     if (inside) {

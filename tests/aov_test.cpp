@@ -75,6 +75,7 @@ class AovTest : public RenderTest {
   PassRender renderPasses(const Scene& scene, uint32_t w, uint32_t h, const PassOptions& o) {
     renderer_->passMask = o.mask;
     renderer_->accumulate = o.progressive;
+    renderer_->coverage = o.filter == FILTER_COVERAGE;
     GpuScene gpuScene = buildGpuScene(scene, w, h);
     uploadScene(*renderer_, gpuScene);
     KernelOptions kernel;
@@ -267,7 +268,8 @@ TEST_F(AovTest, NormalFacesTheEye) {
 }
 
 // The shaded image written beside the passes is the image without them, bit for bit: point and
-// box textures, one sample and N x N, with the sphere tree.
+// box textures, one sample and N x N, with the sphere tree; and the coverage filter's (one sample
+// per dispatch with N x N, as raytex render), whose passes are the box filter's.
 TEST_F(AovTest, ShadedImageIsBitIdenticalWithPasses) {
   struct Case {
     const char* sphere;
@@ -275,14 +277,21 @@ TEST_F(AovTest, ShadedImageIsBitIdenticalWithPasses) {
   };
   const int w = 64, h = 48;
   for (const Case& c : {Case{"aSolidChecker", 1, FILTER_POINT}, Case{"anImage", 2, FILTER_POINT},
-                        Case{"anImage", 1, FILTER_BOX}, Case{"aMarble", 2, FILTER_BOX}}) {
+                        Case{"anImage", 1, FILTER_BOX}, Case{"aMarble", 2, FILTER_BOX},
+                        Case{"aMarble", 1, FILTER_COVERAGE}, Case{"anImage", 2, FILTER_COVERAGE}}) {
     SCOPED_TRACE(std::string(c.sphere) + ", " + std::to_string(c.samplesPerSide) + " per side, filter " +
                  std::to_string(c.filter));
     Scene scene = courseScene(c.sphere, "aWood");
-    const PassRender without = renderPasses(scene, w, h, {0, c.samplesPerSide, c.filter});
-    const PassRender with = renderPasses(scene, w, h, {kAllPasses, c.samplesPerSide, c.filter});
+    const bool perSample = c.filter == FILTER_COVERAGE && c.samplesPerSide > 1;
+    const PassRender without = renderPasses(scene, w, h, {0, c.samplesPerSide, c.filter, perSample});
+    const PassRender with = renderPasses(scene, w, h, {kAllPasses, c.samplesPerSide, c.filter, perSample});
     EXPECT_EQ(differingFloats(with.image, without.image), 0u);
     EXPECT_EQ(countNonFinite(with.image), 0u);
+    if (c.filter != FILTER_COVERAGE) continue;
+    const PassRender box = renderPasses(scene, w, h, {kAllPasses, c.samplesPerSide, FILTER_BOX});
+    EXPECT_GT(differingFloats(with.image, box.image), 0u) << "the edge pass changed nothing";
+    for (uint32_t bit = 0; bit < AOV_COUNT; ++bit)
+      EXPECT_EQ(differingFloats(with.passes[bit], box.passes[bit]), 0u) << passInfo(Pass(bit)).name;
   }
   Scene tree = field(40, "(0, 1, 6)");
   const PassRender without = renderPasses(tree, w, h, {0, 1, FILTER_BOX});

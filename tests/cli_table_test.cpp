@@ -128,21 +128,20 @@ TEST(CliTable, PassesAreNamedAndNeedFilesAndTheBoxFilterWhereTheyComeFromIt) {
   EXPECT_THROW(resolveJob(options, RenderSettings{}, 1), UsageError);
   options.filter = TextureFilter::Box;
   EXPECT_NO_THROW(resolveJob(options, RenderSettings{}, 1));
-  options.filter = TextureFilter::Coverage;
-  EXPECT_THROW(resolveJob(options, RenderSettings{}, 1), UsageError);  // passes come from point or box
+  options.filter = TextureFilter::Coverage;  // the box kernel with edges: its passes
+  EXPECT_NO_THROW(resolveJob(options, RenderSettings{}, 1));
 }
 
-TEST(CliTable, CoverageIsAFilterOfOneSamplePerPixel) {
+TEST(CliTable, CoverageIsAFilterAtAnySampleCount) {
   EXPECT_EQ(parseCli({"render", "s.cfg", "--filter", "coverage"}).render.filter, TextureFilter::Coverage);
   EXPECT_EQ(refusal({"render", "s.cfg", "--filter", "cone"}),
             "--filter expects point, box or coverage, got 'cone'");
-  RenderOptions options = parseCli({"render", "s.cfg", "--filter", "coverage", "--spp", "4"}).render;
-  try {
-    resolveJob(options, RenderSettings{}, 1);
-    ADD_FAILURE() << "--spp 4 with --filter coverage was accepted";
-  } catch (const UsageError& e) {
-    EXPECT_STREQ(e.what(), "--filter coverage renders one sample per pixel: --spp 4 needs --filter box");
-  }
+  RenderOptions options = parseCli({"render", "s.cfg", "--filter", "coverage", "--spp", "16"}).render;
+  const RenderJob job = resolveJob(options, RenderSettings{}, 1);
+  EXPECT_EQ(job.filter, TextureFilter::Coverage);
+  EXPECT_EQ(job.samplesPerSide, 4u);
+  options = parseCli({"view", "s.cfg", "--filter", "coverage"}).render;
+  EXPECT_EQ(resolveJob(options, RenderSettings{}, 64).filter, TextureFilter::Coverage);
   RenderSettings scene;
   scene.filter = TextureFilter::Coverage;
   options = parseCli({"render", "s.cfg"}).render;

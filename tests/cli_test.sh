@@ -108,6 +108,13 @@ expect stats-images-box 0 '\| images 10.7 MiB \| 64x48, 1 spp$' -- \
 # some of the 3072.
 expect stats-edge-pixels 0 '\| 64x48, 1 spp \| [1-9][0-9]+ edge pixels$' -- \
   "$raytex" render "$src/scenes/textures.cfg" -o "$tmp/ok.png" --width 64 --height 48 --stats --filter coverage
+# With 4 spp each sample's edge pass shades the samples whose cells an edge crosses.
+expect stats-edge-samples 0 '\| 64x48, 4 spp \| [1-9][0-9]+ edge samples$' -- \
+  "$raytex" render "$src/scenes/textures.cfg" -o "$tmp/ok.png" --width 64 --height 48 --stats --filter coverage --spp 4
+# Passes with the coverage filter: the box kernel's, from the pixel centre.
+expect coverage-passes 0 '' -- \
+  "$raytex" render "$src/scenes/textures.cfg" -o "$tmp/passes.exr" --width 64 --height 48 --filter coverage --aov footprint,uv
+check coverage-passes-file test -s "$tmp/passes.exr"
 check png-signature test "$(head -c 8 "$tmp/ok.png" | od -An -tx1 | tr -d ' \n')" = 89504e470d0a1a0a
 check png-size test "$(od -An -tu1 -j16 -N8 "$tmp/ok.png" | tr -s ' ')" = " 0 0 0 64 0 0 0 48"
 check no-temp-files test "$(ls "$tmp" | grep -c tmp-)" -eq 0

@@ -103,11 +103,13 @@ constexpr int kReferenceSide = 48;
 }  // namespace
 
 // Each edge alone: a pixel's value is the mix of the two sides by the edge's share of the pixel,
-// which the coverage filter computes in closed form and the box filter rounds to 0 or 1. The
-// bound: the reference's own error (a share quantised to 1/48^2 of a pixel along each row of
-// samples, up to 1/48 of the step) plus the curvature of a silhouette across a pixel, measured
-// at 0.004 (silhouette), 0.007 (horizon), 0.006 (shadow) and 0.001 (crease) on lavapipe; the box
-// filter's worst pixel is 0.32-0.45, near half the step in each.
+// which the coverage filter computes in closed form and the box filter rounds to 0 or 1 (to
+// quarters at 2 x 2 samples, where the coverage filter takes each sample's cell). The bound: the
+// reference's own error (a share quantised to 1/48^2 of a pixel along each row of samples, up to
+// 1/48 of the step) plus the curvature of a silhouette across a pixel, measured at 0.004
+// (silhouette), 0.007 (horizon), 0.006 (shadow) and 0.001 (crease) at 1 spp on lavapipe and at
+// 0.003, 0.007, 0.003 and 0.001 at 4; the box filter's worst pixel is 0.32-0.45 at 1 spp, near
+// half the step in each, and 0.08-0.20 at 4.
 TEST_F(CoverageTest, EachEdgeAloneMatchesTheReferencePixelByPixel) {
   struct Case {
     const char* name;
@@ -119,24 +121,32 @@ TEST_F(CoverageTest, EachEdgeAloneMatchesTheReferencePixelByPixel) {
   for (Case& c : cases) {
     SCOPED_TRACE(c.name);
     const ReferenceImage ref = renderReference(c.scene, kWidth, kHeight, kReferenceSide);
-    const WorstPixel box = worstPixel(render(c.scene, kWidth, kHeight, OUTPUT_SHADED, 1, FILTER_BOX), ref);
-    const WorstPixel coverage = worstPixel(render(c.scene, kWidth, kHeight, OUTPUT_SHADED, 1, FILTER_COVERAGE), ref);
-    EXPECT_GT(box.difference, 0.2) << "the scene shows no hard edge to cover";
-    EXPECT_LT(coverage.difference, 0.03) << "at pixel (" << coverage.x << ", " << coverage.y << ")";
+    for (uint32_t side : {1u, 2u}) {
+      SCOPED_TRACE(std::to_string(side * side) + " spp");
+      const WorstPixel box = worstPixel(render(c.scene, kWidth, kHeight, OUTPUT_SHADED, side, FILTER_BOX), ref);
+      const WorstPixel coverage =
+          worstPixel(render(c.scene, kWidth, kHeight, OUTPUT_SHADED, side, FILTER_COVERAGE), ref);
+      EXPECT_GT(box.difference, side == 1 ? 0.2 : 0.05) << "the scene shows no hard edge to cover";
+      EXPECT_LT(coverage.difference, 0.03) << "at pixel (" << coverage.x << ", " << coverage.y << ")";
+    }
   }
 }
 
 // The course scene with two materials on the sphere: the coverage filter's RMSE against the
-// reference is well below the box filter's (measured: about 0.6 of it).
+// reference is well below the box filter's, at 1 and 4 spp (measured: 0.37-0.56 of it).
 TEST_F(CoverageTest, CourseSceneIsCloserToTheReferenceThanTheBoxFilter) {
   for (const char* material : {"aSolidChecker", "aMarble"}) {
     SCOPED_TRACE(material);
     const Scene scene = courseScene(material);
     const ReferenceImage ref = renderReference(scene, kWidth, kHeight, 32);
-    const double box = rmseAgainstReference(render(scene, kWidth, kHeight, OUTPUT_SHADED, 1, FILTER_BOX).data(), ref);
-    const double coverage =
-        rmseAgainstReference(render(scene, kWidth, kHeight, OUTPUT_SHADED, 1, FILTER_COVERAGE).data(), ref);
-    EXPECT_LT(coverage, 0.75 * box) << "box " << box << ", coverage " << coverage;
+    for (uint32_t side : {1u, 2u}) {
+      SCOPED_TRACE(std::to_string(side * side) + " spp");
+      const double box =
+          rmseAgainstReference(render(scene, kWidth, kHeight, OUTPUT_SHADED, side, FILTER_BOX).data(), ref);
+      const double coverage =
+          rmseAgainstReference(render(scene, kWidth, kHeight, OUTPUT_SHADED, side, FILTER_COVERAGE).data(), ref);
+      EXPECT_LT(coverage, 0.75 * box) << "box " << box << ", coverage " << coverage;
+    }
   }
 }
 
@@ -164,31 +174,36 @@ std::vector<long long> centreStates(const Scene& scene, uint32_t width, uint32_t
   return states;
 }
 
-// Where no edge crosses a pixel the coverage filter leaves the box filter's value: every pixel
-// that differs lies next to a change of what the centres see (an object, or a light blocked),
-// within two pixels (float against float64 can list a pixel next to a grazing centre).
+// Where no edge crosses a pixel the coverage filter leaves the box filter's value, at 1 spp and,
+// where its samples go one dispatch each, at 4 (the progressive sums are bit-identical to the box
+// kernel's N x N loop): every pixel that differs lies next to a change of what the centres see
+// (an object, or a light blocked), within two pixels (float against float64 can list a pixel
+// next to a grazing centre).
 TEST_F(CoverageTest, PixelsNoEdgeCrossesAreBitIdenticalToTheBoxFilter) {
   const Scene scene = courseScene("aSolidChecker");
-  const std::vector<float> box = render(scene, kWidth, kHeight, OUTPUT_SHADED, 1, FILTER_BOX);
-  const std::vector<float> coverage = render(scene, kWidth, kHeight, OUTPUT_SHADED, 1, FILTER_COVERAGE);
   const std::vector<long long> states = centreStates(scene, kWidth, kHeight);
-  size_t differing = 0, unexplained = 0;
-  for (int y = 0; y < int(kHeight); ++y)
-    for (int x = 0; x < int(kWidth); ++x) {
-      const size_t i = size_t(y) * kWidth + x;
-      if (std::equal(&box[4 * i], &box[4 * i + 4], &coverage[4 * i])) continue;
-      ++differing;
-      bool edge = false;
-      for (int dy = -2; dy <= 2; ++dy)
-        for (int dx = -2; dx <= 2; ++dx) {
-          const int nx = x + dx, ny = y + dy;
-          if (nx >= 0 && ny >= 0 && nx < int(kWidth) && ny < int(kHeight))
-            edge |= states[size_t(ny) * kWidth + nx] != states[i];
-        }
-      unexplained += !edge;
-    }
-  EXPECT_GT(differing, 0u) << "the edge pass changed nothing";
-  EXPECT_EQ(unexplained, 0u) << "of " << differing << " pixels that differ from the box filter's";
+  for (uint32_t side : {1u, 2u}) {
+    SCOPED_TRACE(std::to_string(side * side) + " spp");
+    const std::vector<float> box = render(scene, kWidth, kHeight, OUTPUT_SHADED, side, FILTER_BOX);
+    const std::vector<float> coverage = render(scene, kWidth, kHeight, OUTPUT_SHADED, side, FILTER_COVERAGE);
+    size_t differing = 0, unexplained = 0;
+    for (int y = 0; y < int(kHeight); ++y)
+      for (int x = 0; x < int(kWidth); ++x) {
+        const size_t i = size_t(y) * kWidth + x;
+        if (std::equal(&box[4 * i], &box[4 * i + 4], &coverage[4 * i])) continue;
+        ++differing;
+        bool edge = false;
+        for (int dy = -2; dy <= 2; ++dy)
+          for (int dx = -2; dx <= 2; ++dx) {
+            const int nx = x + dx, ny = y + dy;
+            if (nx >= 0 && ny >= 0 && nx < int(kWidth) && ny < int(kHeight))
+              edge |= states[size_t(ny) * kWidth + nx] != states[i];
+          }
+        unexplained += !edge;
+      }
+    EXPECT_GT(differing, 0u) << "the edge pass changed nothing";
+    EXPECT_EQ(unexplained, 0u) << "of " << differing << " pixels that differ from the box filter's";
+  }
 }
 
 // At the host's loop limit for the coverage filter (checkLoopLimit with two traces: 120 lights

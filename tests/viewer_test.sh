@@ -151,5 +151,32 @@ rc=$?
 check reload-clean-exit test "$rc" -eq 0 || tail -5 "$tmp/reload.log"
 viewer=""
 
+# The coverage filter: each sample's edge pass writes its listed pixels' sums and display
+# pixels, so the window and F12 show the render's image (bit for bit in the PNG), after a key
+# switched the kernels (main kernel and edge pass).
+"$raytex" view "$src/scenes/textures.cfg" -o "$tmp/coverage-shot.png" --width 160 --height 120 --spp 16 \
+  --filter coverage --validate >"$tmp/coverage.log" 2>&1 &
+viewer=$!
+waitWindow "$tmp/coverage.log" coverage-window-opens
+check coverage-accumulates waitTitle '| 16/16 samples'
+xdotool key --window "$wid" 3
+check coverage-key-3-marble waitTitle 'sphere: aMarble'
+check coverage-converged waitTitle '| 16/16 samples'
+xdotool key --window "$wid" F12
+check coverage-screenshot waitTitle "wrote $tmp/coverage-shot.png"
+xwd -id "$wid" -silent >"$tmp/coverage.xwd"
+xdotool key --window "$wid" Escape
+wait "$viewer"
+rc=$?
+viewer=""
+check coverage-clean-exit test "$rc" -eq 0 || tail -5 "$tmp/coverage.log"
+check coverage-no-validation-errors test "$(grep -c 'validation error' "$tmp/coverage.log")" -eq 0
+sed -e 's|^    aSolidChecker;|    // aSolidChecker;|' -e 's|^    // aMarble;|    aMarble;|' "$src/scenes/textures.cfg" \
+  >"$tmp/headless/scenes/coverage-test.cfg"
+"$raytex" render "$tmp/headless/scenes/coverage-test.cfg" -o "$tmp/coverage-render.png" --width 160 --height 120 \
+  --spp 16 --filter coverage
+check coverage-screenshot-equals-render cmp -s "$tmp/coverage-shot.png" "$tmp/coverage-render.png"
+check coverage-window-shows-render "$xwdDiff" "$tmp/coverage.xwd" "$tmp/coverage-render.png" 1
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

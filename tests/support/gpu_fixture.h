@@ -40,18 +40,24 @@ class RenderTest : public ::testing::Test {
                             const BakedScene* bakedScene = nullptr) {
     GpuScene gpuScene = buildGpuScene(scene, width, height);
     renderer_->coverage = filter == FILTER_COVERAGE;
+    // The coverage filter's samples go one dispatch each, as in raytex render (headless.cpp).
+    const bool perSample = renderer_->coverage && samplesPerSide > 1;
+    renderer_->accumulate = perSample;
     uploadScene(*renderer_, gpuScene);
     KernelOptions kernel;
     kernel.outputMode = mode;
     kernel.textureFilter = filter;
     kernel.samplesPerSide = samplesPerSide;
+    kernel.progressive = perSample;
     kernel.bakeValues = baked;
     KernelKey key = kernelKey(gpuScene, kernel);
     if (shape) key.shape = *shape;
     if (bakedScene) key.baked = *bakedScene;
     preparePipeline(*renderer_, key);
-    renderFrame(*renderer_);
+    if (!perSample) renderFrame(*renderer_);
+    for (uint32_t i = 0; perSample && i < samplesPerSide * samplesPerSide; ++i) renderSample(*renderer_, i);
     readbackFrame(*renderer_);
+    renderer_->accumulate = false;
     const float* pixels = framePixels(*renderer_);
     return std::vector<float>(pixels, pixels + size_t(width) * height * 4);
   }
