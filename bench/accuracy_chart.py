@@ -50,7 +50,9 @@ def main():
     metrics = [("rmse", "RMSE (linear)"), ("flip", "FLIP (sRGB)")]
     blocks = (len(scenes) + columns - 1) // columns
     fig, axes = plt.subplots(2 * blocks, columns, figsize=(3.4 * columns, 2.7 * 2 * blocks), squeeze=False)
-    styles = {"point": ("tab:red", "o"), "box": ("tab:blue", "s"), "coverage": ("tab:green", "D")}
+    styles = {"point": ("tab:red", "o"), "box": ("tab:blue", "s"), "coverage": ("tab:green", "D"),
+              "box-bilinear": ("tab:brown", "v"), "box-trilinear": ("tab:purple", "^"), "box-ewa": ("tab:cyan", "P"),
+              "box-stochastic": ("tab:gray", "x")}
     for index in range(blocks * columns):
         block, col = divmod(index, columns)
         if index >= len(scenes):
@@ -78,7 +80,10 @@ def main():
                 ax.set_ylabel(label, fontsize=8)
             if row_index == 1:
                 ax.set_xlabel("GPU time per frame (ms)", fontsize=7)
-    axes[0][0].legend(title="texture filter", fontsize=8)
+    # The legend of the panel with the most methods (a scene with images).
+    richest = max(range(len(scenes)), key=lambda i: len({r["method"] for r in rows if r["scene"] == scenes[i]}))
+    block, col = divmod(richest, columns)
+    axes[2 * block][col].legend(title="filter (box-*: image method)", fontsize=6, title_fontsize=7)
     fig.suptitle("raytex: error vs time, numbers = samples per pixel; reference: float64, 64x64 spp\n"
                  "Mesa lavapipe (CPU Vulkan), %s, 2 threads" % platform.machine(), fontsize=9)
     fig.tight_layout()

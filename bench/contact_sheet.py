@@ -2,7 +2,7 @@
 """Draws the contact sheet of raytex_bench_accuracy's images: one row per scene; columns: the
 float64 reference, then point, box and coverage at one sample per pixel, each beside its FLIP
 heat map against the reference (`raytex diff --heatmap`, written next to the images), titled
-with its mean FLIP and RMSE. Pixels are shown at an integer scale, without smoothing.
+with its mean FLIP and its RMSE (the float image's, from the CSV). Pixels are shown at an integer scale, without smoothing.
 Usage: bench/contact_sheet.py IN.csv OUT.png RAYTEX [SPP]   (SPP: samples per pixel, default 1)
 """
 import csv
@@ -21,16 +21,16 @@ METHODS = ["point", "box", "coverage"]
 
 
 def heatmap(raytex, reference, image):
-    """Writes image's FLIP heat map beside it; returns its path, mean FLIP and RMSE."""
+    """Writes image's FLIP heat map beside it; returns its path and mean FLIP."""
     out = os.path.splitext(image)[0] + "_flip.png"
     report = subprocess.run([raytex, "diff", reference, image, "--json", "--heatmap", out],
                             check=True, capture_output=True, text=True)
-    metrics = json.loads(report.stdout)
-    return out, metrics["flip"], metrics["rmse"]
+    return out, json.loads(report.stdout)["flip"]
 
 
 def sheet_rows(rows, folder, raytex, spp):
-    """Per scene: the reference's path and, per method, (image, heat map, FLIP, RMSE)."""
+    """Per scene: the reference's path and, per method, (image, heat map, FLIP, RMSE of the float
+    image, from the CSV)."""
     scenes = {}
     for row in rows:
         if row["method"] not in METHODS or row["spp"] != spp:
@@ -38,7 +38,7 @@ def sheet_rows(rows, folder, raytex, spp):
         reference = os.path.join(folder, row["reference"])
         image = os.path.join(folder, row["image"])
         entry = scenes.setdefault(row["scene"], {"reference": reference})
-        entry[row["method"]] = (image,) + heatmap(raytex, reference, image)
+        entry[row["method"]] = (image,) + heatmap(raytex, reference, image) + (float(row["rmse"]),)
     missing = [s for s, e in scenes.items() if any(m not in e for m in METHODS)]
     if missing or not scenes:
         sys.exit("contact_sheet.py: no %s spp row for every method in %s" % (spp, ", ".join(missing) or "any scene"))
@@ -62,10 +62,10 @@ def draw(scenes, chart, spp):
             ax.imshow(mpimg.imread(path), interpolation="nearest")
             ax.set_title(title, fontsize=6.5, pad=2)
             ax.axis("off")
+    inches = fig.get_figheight()
     fig.suptitle("%s spp against the float64 reference (64x64 spp); FLIP heat maps: dark purple 0, pale yellow 1" % spp,
-                 fontsize=8)
-    fig.subplots_adjust(left=0.005, right=0.995, top=1 - 0.45 / fig.get_figheight(), bottom=0.005,
-                        wspace=0.02, hspace=0.25)
+                 fontsize=8, y=1 - 0.08 / inches)
+    fig.subplots_adjust(left=0.005, right=0.995, top=1 - 0.5 / inches, bottom=0.005, wspace=0.02, hspace=0.25)
     fig.savefig(chart, dpi=100)
 
 

@@ -67,6 +67,12 @@ TextureFilter parseFilter(const std::string& flag, const std::string& text) {
   return *filter;
 }
 
+ImageFilter parseImageFilter(const std::string& flag, const std::string& text) {
+  std::optional<ImageFilter> filter = imageFilterNamed(text);
+  if (!filter) throw UsageError(flag + " expects anisotropic, trilinear, bilinear, ewa or stochastic, got '" + text + "'");
+  return *filter;
+}
+
 std::string nonEmpty(const std::string& flag, const std::string& text, const char* what) {
   if (text.empty()) throw UsageError(flag + " needs " + what);
   return text;
@@ -118,6 +124,12 @@ const CliOption kOptions[] = {
      "footprint from ray differentials) or coverage (box, and where a silhouette, the horizon, a crease or a shadow's "
      "edge crosses a sample's cell, each side weighted by its share of the cell: the pixel at 1 spp)",
      [](CliArgs& c, const std::string& f, const std::string& v) { c.render.filter = parseFilter(f, v); }},
+    {"--image-filter", nullptr, "METHOD", kAll,
+     "how box and coverage filter image textures over the footprint: anisotropic (default: trilinear probes along "
+     "its long axis), trilinear (one lookup at the level of the long axis), bilinear (level 0, no mip levels), ewa "
+     "(elliptical Gaussian over at most 16 texels a level) or stochastic (one texel per sample, drawn from the "
+     "footprint's filter)",
+     [](CliArgs& c, const std::string& f, const std::string& v) { c.render.imageFilter = parseImageFilter(f, v); }},
     {"--reference", nullptr, nullptr, kRender,
      "render on the CPU in float64 (slow; the accuracy reference), no Vulkan",
      [](CliArgs& c, const std::string&, const std::string&) { c.render.reference = true; }},
@@ -427,6 +439,10 @@ RenderJob resolveJob(const RenderOptions& options, const RenderSettings& s, uint
       options.samplesPerPixel.value_or(s.samplesPerPixel ? uint32_t(*s.samplesPerPixel) : defaultSamplesPerPixel);
   job.samplesPerSide = uint32_t(std::lround(std::sqrt(double(job.samplesPerPixel))));
   job.filter = resolvedFilter(options, s);
+  job.imageFilter = options.imageFilter.value_or(s.imageFilter.value_or(ImageFilter::Anisotropic));
+  if (job.filter == TextureFilter::Point && job.imageFilter != ImageFilter::Anisotropic)
+    throw UsageError("image filter " + std::string(imageFilterName(job.imageFilter)) +
+                     " filters over the footprint: add --filter box or coverage (point looks images up at the hit)");
   for (Pass p : options.passes)
     if (passInfo(p).boxFilterOnly && job.filter == TextureFilter::Point)
       throw UsageError("--aov " + std::string(passInfo(p).name) + " comes from the box filter: add --filter box");

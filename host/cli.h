@@ -26,6 +26,7 @@ struct RenderOptions {
   int device = -1;        // --device N; -1: best available
   std::optional<uint32_t> samplesPerPixel;  // --spp: a square N*N, stratified, box filtered
   std::optional<TextureFilter> filter;  // --filter
+  std::optional<ImageFilter> imageFilter;  // --image-filter
   bool reference = false;  // --reference: the float64 CPU renderer instead of Vulkan
   bool stats = false;     // --stats: one line of phase times (view: frame times at exit)
   bool validate = false;  // --validate, or RAYTEX_VALIDATION=1: Vulkan validation layers
@@ -70,6 +71,7 @@ struct RenderJob {
   uint32_t width = 640, height = 480;
   uint32_t samplesPerPixel = 1, samplesPerSide = 1;
   TextureFilter filter = TextureFilter::Point;
+  ImageFilter imageFilter = ImageFilter::Anisotropic;
 };
 
 // The filter: --filter, else the scene's render block, else point.

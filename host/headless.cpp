@@ -57,6 +57,7 @@ void preparePipelines(Renderer& renderer, const GpuScene& gpuScene, const Render
                       double samples) {
   KernelOptions kernel;
   kernel.textureFilter = kernelFilter(job.filter);
+  kernel.imageFilter = kernelImageFilter(job.imageFilter);
   kernel.samplesPerSide = job.samplesPerSide;
   kernel.progressive = perSample;
   kernel.bakeValues = true;

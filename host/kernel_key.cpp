@@ -18,11 +18,25 @@ uint32_t kernelFilter(TextureFilter filter) {
   return FILTER_POINT;
 }
 
+static_assert(2 * EWA_MAX_TEXELS + 1 <= 33, "EWA's two levels fit the loop passes reserved for the image filter");
+
+uint32_t kernelImageFilter(ImageFilter filter) {
+  switch (filter) {
+    case ImageFilter::Anisotropic: return IMAGE_FILTER_ANISOTROPIC;
+    case ImageFilter::Trilinear: return IMAGE_FILTER_TRILINEAR;
+    case ImageFilter::Bilinear: return IMAGE_FILTER_BILINEAR;
+    case ImageFilter::Ewa: return IMAGE_FILTER_EWA;
+    case ImageFilter::Stochastic: return IMAGE_FILTER_STOCHASTIC;
+  }
+  return IMAGE_FILTER_ANISOTROPIC;
+}
+
 KernelKey kernelKey(const GpuScene& scene, const KernelOptions& options) {
   KernelKey key;
   key.shape = scene.shape;
   key.outputMode = options.outputMode;
   key.textureFilter = options.textureFilter;
+  key.imageFilter = options.textureFilter == FILTER_POINT ? IMAGE_FILTER_ANISOTROPIC : options.imageFilter;
   key.samplesPerSide = options.samplesPerSide;
   key.progressive = options.progressive ? 1u : 0u;
   if (options.bakeValues) key.baked = bakeScene(scene);

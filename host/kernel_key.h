@@ -49,6 +49,7 @@ struct BakedScene {
 struct KernelOptions {
   uint32_t outputMode = OUTPUT_SHADED;  // OUTPUT_*: the debug outputs use their own build variant
   uint32_t textureFilter = FILTER_POINT;  // FILTER_*
+  uint32_t imageFilter = IMAGE_FILTER_ANISOTROPIC;  // IMAGE_FILTER_*, with FILTER_BOX or FILTER_COVERAGE
   uint32_t samplesPerSide = 1;          // N x N samples per pixel
   bool progressive = false;             // one sample per dispatch, accumulated (the viewer)
   bool bakeValues = false;              // the scene's values built in, where they fit (a fixed camera)
@@ -58,6 +59,7 @@ struct KernelKey {
   SceneShape shape;              // kinds per shape (absent ones compiled out), counts, images
   uint32_t outputMode = OUTPUT_SHADED;  // SPEC_OUTPUT_MODE
   uint32_t textureFilter = FILTER_POINT;  // FILTER_*: selects the kernel's build variant
+  uint32_t imageFilter = IMAGE_FILTER_ANISOTROPIC;  // SPEC_IMAGE_FILTER
   uint32_t samplesPerSide = 1;   // SPEC_SAMPLES_PER_SIDE
   uint32_t progressive = 0;      // SPEC_PROGRESSIVE (a VkBool32)
   BakedScene baked;              // SPEC_BAKED and the words, when options.bakeValues
@@ -71,14 +73,16 @@ struct KernelKey {
   uint32_t edgePass = 0;
   bool operator==(const KernelKey& o) const {
     return shape == o.shape && outputMode == o.outputMode && textureFilter == o.textureFilter &&
+           imageFilter == o.imageFilter &&
            samplesPerSide == o.samplesPerSide && progressive == o.progressive && baked == o.baked &&
            loopBudget == o.loopBudget && tileOrder == o.tileOrder && passMask == o.passMask &&
            edgePass == o.edgePass;
   }
 };
 
-// The kernel's FILTER_* for a render's filter.
+// The kernel's FILTER_* for a render's filter, and its IMAGE_FILTER_* for an image filter.
 uint32_t kernelFilter(TextureFilter filter);
+uint32_t kernelImageFilter(ImageFilter filter);
 
 // The key of the kernel that renders `scene` with `options`.
 KernelKey kernelKey(const GpuScene& scene, const KernelOptions& options);

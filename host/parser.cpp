@@ -489,19 +489,24 @@ class Parser {
       fail(upLoc, "camera up must be non-zero and not parallel to the view direction");
   }
 
-  // render { width = W; height = H; spp = N; filter = point|box; }
+  // render { width = W; height = H; spp = N; filter = point|box|coverage; image_filter = METHOD; }
   void parseRender(const Token& kw) {
     if (st_.renderLoc.line > 0) fail(kw.loc, "duplicate render (first defined at " + locString(st_.renderLoc) + ")");
     st_.renderLoc = kw.loc;
     RenderSettings& r = st_.scene.render;
     Seen seen;
     block("render", [&](const Token& key) {
-      assignKnown(key, seen, "render", {"width", "height", "spp", "filter"});
+      assignKnown(key, seen, "render", {"width", "height", "spp", "filter", "image_filter"});
       if (key.text == "filter") {
         Token v = take();
         std::optional<TextureFilter> filter = v.kind == Tok::Ident ? textureFilterNamed(v.text) : std::nullopt;
         if (!filter) fail(v.loc, "filter must be point, box or coverage, got " + describe(v));
         r.filter = filter;
+      } else if (key.text == "image_filter") {
+        Token v = take();
+        std::optional<ImageFilter> filter = v.kind == Tok::Ident ? imageFilterNamed(v.text) : std::nullopt;
+        if (!filter) fail(v.loc, "image_filter must be anisotropic, trilinear, bilinear, ewa or stochastic, got " + describe(v));
+        r.imageFilter = filter;
       } else {
         FileLoc loc;
         std::string text;

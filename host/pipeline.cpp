@@ -134,6 +134,7 @@ VkPipeline createTracePipeline(const Device& device, VkPipelineLayout layout, co
       {SPEC_BAKED, offsetof(KernelKey, baked.enabled), sizeof(VkBool32)},
       {SPEC_BAKED_MATERIAL_COUNT, offsetof(KernelKey, baked.materialCount), sizeof(uint32_t)},
       {SPEC_TEXTURE_FILTER, offsetof(KernelKey, textureFilter), sizeof(uint32_t)},
+      {SPEC_IMAGE_FILTER, offsetof(KernelKey, imageFilter), sizeof(uint32_t)},
   };
   // Only the pass variant declares the pass mask: without passes the constants are as before it.
   if (key.passMask != 0) entries.push_back({SPEC_PASS_MASK, offsetof(KernelKey, passMask), sizeof(uint32_t)});

@@ -9,6 +9,7 @@ Metadata renderMetadata(const RenderOptions& options, const RenderJob& job, cons
       {"Samples per pixel", std::to_string(job.samplesPerPixel)},
       {"Texture filter", textureFilterName(job.filter)},
   };
+  if (job.imageFilter != ImageFilter::Anisotropic) m.push_back({"Image filter", imageFilterName(job.imageFilter)});
   if (!options.fullMetadata) return m;
   char ms[32];
   snprintf(ms, sizeof ms, "%.1f ms", facts.renderMs);

@@ -40,3 +40,21 @@ std::optional<TextureFilter> textureFilterNamed(const std::string& name) {
     if (name == textureFilterName(f)) return f;
   return std::nullopt;
 }
+
+const char* imageFilterName(ImageFilter filter) {
+  switch (filter) {
+    case ImageFilter::Anisotropic: return "anisotropic";
+    case ImageFilter::Trilinear: return "trilinear";
+    case ImageFilter::Bilinear: return "bilinear";
+    case ImageFilter::Ewa: return "ewa";
+    case ImageFilter::Stochastic: return "stochastic";
+  }
+  return "anisotropic";
+}
+
+std::optional<ImageFilter> imageFilterNamed(const std::string& name) {
+  for (ImageFilter f : {ImageFilter::Anisotropic, ImageFilter::Trilinear, ImageFilter::Bilinear, ImageFilter::Ewa,
+                        ImageFilter::Stochastic})
+    if (name == imageFilterName(f)) return f;
+  return std::nullopt;
+}

@@ -110,11 +110,25 @@ enum class TextureFilter {
 const char* textureFilterName(TextureFilter filter);
 std::optional<TextureFilter> textureFilterNamed(const std::string& name);
 
+// How the box and coverage filters filter image textures over the footprint (docs/textures.md,
+// "Image filter methods"); the point filter looks an image up bilinearly at the hit.
+enum class ImageFilter {
+  Anisotropic,  // trilinear probes along the footprint's major axis (the default)
+  Trilinear,    // one trilinear lookup at the level of the major axis
+  Bilinear,     // one bilinear lookup at level 0, no mip levels
+  Ewa,          // elliptical weighted average (Gaussian) over the texels of two levels, capped
+  Stochastic,   // one texel per sample, drawn from the footprint's filter
+};
+// The method's name on the command line and in `render { image_filter = ...; }`, and back.
+const char* imageFilterName(ImageFilter filter);
+std::optional<ImageFilter> imageFilterNamed(const std::string& name);
+
 // How to render, as a scene file may ask with `render { ... }`; command-line flags override.
 struct RenderSettings {
   std::optional<int> width, height;
   std::optional<int> samplesPerPixel;  // a square number: an N x N stratified grid
   std::optional<TextureFilter> filter;
+  std::optional<ImageFilter> imageFilter;
 };
 
 struct Scene {

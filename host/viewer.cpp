@@ -255,6 +255,7 @@ std::string title(const ViewerState& state, uint32_t samples, uint32_t target, d
 KernelKey viewerKey(const GpuScene& packed, const Scene& scene, const RenderJob& job) {
   KernelOptions options;
   options.textureFilter = kernelFilter(job.filter);
+  options.imageFilter = kernelImageFilter(job.imageFilter);
   options.samplesPerSide = job.samplesPerSide;
   options.progressive = true;
   KernelKey key = kernelKey(packed, options);

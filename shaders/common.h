@@ -137,7 +137,8 @@ using uvec4 = glm::uvec4;
 #define NOISE_MAX_OCTAVES 16u
 // Loop passes per sample bounded by constants, reserved for in the budget: the noise kinds' octave
 // loops (each runs in every SIMD group with its kind, at most NOISE_MAX_OCTAVES passes, and one
-// masked), the box filter's probes (9) and the image's (at most 32, on a sphere, and one masked).
+// masked), the box filter's probes (9) and the image filter's: at most 32 probes on a sphere, or
+// EWA_MAX_TEXELS at each of two levels, and one masked.
 #define LOOP_PASSES_PER_SAMPLE (4u * (NOISE_MAX_OCTAVES + 1u) + 9u + 33u)
 #define STATUS_WORDS 4
 
@@ -179,6 +180,7 @@ using uvec4 = glm::uvec4;
 #define SPEC_SHADOW_LISTS 16 // 1: shadow rays test their cell's and light's spheres (BINDING_TILE_*)
 #define SPEC_PASS_MASK 17    // bit (1 << AOV_*) per pass written to BINDING_AOV (the RAYTEX_AOV modules)
 #define SPEC_TEXTURE_FILTER 18  // FILTER_*: FILTER_COVERAGE makes the box kernel list edge pixels
+#define SPEC_IMAGE_FILTER 19    // IMAGE_FILTER_*: how the box kernel filters image textures
 
 // Scenes with at most this many spheres, planes or lights get kernels with the count
 // built in (the loops over them unrolled); larger ones loop to Frame's count. On lavapipe a
@@ -229,6 +231,18 @@ using uvec4 = glm::uvec4;
 #define FILTER_COVERAGE 2  // FILTER_BOX, and where a silhouette, the horizon or a shadow's edge
                            // crosses the pixel, the share of the pixel on each side in closed
                            // form (shaders/coverage.glsl, docs/accuracy.md)
+
+// How FILTER_BOX (and FILTER_COVERAGE) filters image textures over the footprint
+// (shaders/kinds/image.glsl, image_filters.glsl; docs/textures.md, "Image filter methods").
+#define IMAGE_FILTER_ANISOTROPIC 0  // trilinear probes along the footprint's major axis (default)
+#define IMAGE_FILTER_TRILINEAR 1    // one trilinear lookup at the level of the major axis
+#define IMAGE_FILTER_BILINEAR 2     // one bilinear lookup at level 0: no mip levels
+#define IMAGE_FILTER_EWA 3          // elliptical Gaussian over the texels of two levels (capped)
+#define IMAGE_FILTER_STOCHASTIC 4   // one texel per sample, drawn from the footprint's filter
+// Most texels the EWA filter weighs at each of its two levels: a footprint whose ellipse spans
+// more at the level of its minor axis is filtered at a coarser level. Two levels of it fit the
+// loop passes reserved for the anisotropic filter's 32 probes (LOOP_PASSES_PER_SAMPLE).
+#define EWA_MAX_TEXELS 16u
 
 // Material.imageIndex's wrap bit: the image appears once (CLAMP_TO_EDGE), not tiled.
 #define IMAGE_WRAP_CLAMP 0x10000u

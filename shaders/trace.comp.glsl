@@ -44,6 +44,7 @@ layout(constant_id = SPEC_PASS_MASK) const uint PASS_MASK = 0u;
 #endif
 // FILTER_COVERAGE: the box kernel also lists the pixels an edge may cross (edge_flags.glsl).
 layout(constant_id = SPEC_TEXTURE_FILTER) const uint TEXTURE_FILTER = FILTER_POINT;
+layout(constant_id = SPEC_IMAGE_FILTER) const uint IMAGE_FILTER = IMAGE_FILTER_ANISOTROPIC;
 #ifdef RAYTEX_EDGE_PASS
 const bool EDGE_FLAGS = false;
 #else
@@ -182,6 +183,7 @@ vec3 albedoAt(Hit hit, Surface s, Material m, vec3 origin, vec2 film, float spac
   vec3 dpdx, dpdy;
   Footprint fp;
   TexCoord tc = footprintAt(hit, s, origin, film, spacing, fp, dpdx, dpdy);
+  if (IMAGE_FILTER == IMAGE_FILTER_STOCHASTIC) imageSeed = imageHash(floatBitsToUint(film.x) ^ imageHash(floatBitsToUint(film.y)));
 #ifdef RAYTEX_EDGE_PASS
   shadeDpdx = dpdx;
   shadeDpdy = dpdy;

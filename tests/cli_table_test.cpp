@@ -150,6 +150,29 @@ TEST(CliTable, CoverageIsAFilterAtAnySampleCount) {
   EXPECT_EQ(resolveJob(options, scene, 1).filter, TextureFilter::Point);
 }
 
+TEST(CliTable, ImageFiltersComeWithTheBoxOrCoverageFilter) {
+  EXPECT_EQ(refusal({"render", "s.cfg", "--image-filter", "box"}),
+            "--image-filter expects anisotropic, trilinear, bilinear, ewa or stochastic, got 'box'");
+  RenderOptions options = parseCli({"render", "s.cfg", "--image-filter", "ewa", "--filter", "box"}).render;
+  EXPECT_EQ(resolveJob(options, RenderSettings{}, 1).imageFilter, ImageFilter::Ewa);
+  options.filter = TextureFilter::Point;
+  try {
+    resolveJob(options, RenderSettings{}, 1);
+    ADD_FAILURE() << "--image-filter ewa with --filter point was accepted";
+  } catch (const UsageError& e) {
+    EXPECT_STREQ(e.what(), "image filter ewa filters over the footprint: add --filter box or coverage (point looks "
+                           "images up at the hit)");
+  }
+  RenderSettings scene;  // the render block's, under the flag's
+  scene.filter = TextureFilter::Coverage;
+  scene.imageFilter = ImageFilter::Stochastic;
+  options = parseCli({"render", "s.cfg"}).render;
+  EXPECT_EQ(resolveJob(options, scene, 1).imageFilter, ImageFilter::Stochastic);
+  options.imageFilter = ImageFilter::Trilinear;
+  EXPECT_EQ(resolveJob(options, scene, 1).imageFilter, ImageFilter::Trilinear);
+  EXPECT_EQ(resolveJob(parseCli({"render", "s.cfg"}).render, RenderSettings{}, 1).imageFilter, ImageFilter::Anisotropic);
+}
+
 TEST(CliTable, DiffTakesTwoImagesAndOnlyItsOwnOptions) {
   const CliArgs cli = parseCli({"diff", "a.png", "--threshold=0.02", "b.png", "--heatmap", "h.png", "--fail-rmse",
                                 "0.1", "--fail-flip", "0.05", "--fail-percent", "2.5", "--json"});

@@ -115,6 +115,12 @@ expect stats-edge-samples 0 '\| 64x48, 4 spp \| [1-9][0-9]+ edge samples$' -- \
 expect coverage-passes 0 '' -- \
   "$raytex" render "$src/scenes/textures.cfg" -o "$tmp/passes.exr" --width 64 --height 48 --filter coverage --aov footprint,uv
 check coverage-passes-file test -s "$tmp/passes.exr"
+# Image filter methods: with the box filter, named in the PNG's metadata; with point, exit 2.
+expect image-filter-ewa 0 '' -- \
+  "$raytex" render "$course/image.cfg" -o "$tmp/ewa.png" --width 64 --height 48 --filter box --image-filter ewa
+check image-filter-metadata grep -aq 'Image filter.ewa' "$tmp/ewa.png"
+expect image-filter-point 2 '^raytex: image filter ewa filters over the footprint: add --filter box or coverage' -- \
+  "$raytex" render "$course/image.cfg" -o "$tmp/ewa.png" --width 64 --height 48 --image-filter ewa
 check png-signature test "$(head -c 8 "$tmp/ok.png" | od -An -tx1 | tr -d ' \n')" = 89504e470d0a1a0a
 check png-size test "$(od -An -tu1 -j16 -N8 "$tmp/ok.png" | tr -s ' ')" = " 0 0 0 64 0 0 0 48"
 check no-temp-files test "$(ls "$tmp" | grep -c tmp-)" -eq 0

@@ -870,6 +870,8 @@ TEST(ParserRender, BlockSetsSizeSamplesAndFilter) {
   EXPECT_EQ(s.render.samplesPerPixel, 16);
   EXPECT_EQ(s.render.filter, TextureFilter::Box);
   EXPECT_EQ(parseSceneText("render { filter = coverage; }\n", "c.cfg").render.filter, TextureFilter::Coverage);
+  EXPECT_FALSE(s.render.imageFilter.has_value());
+  EXPECT_EQ(parseSceneText("render { filter = box; image_filter = ewa; }\n", "i.cfg").render.imageFilter, ImageFilter::Ewa);
   Scene none = parseSceneText("", "e.cfg");
   EXPECT_FALSE(none.render.width.has_value());
   EXPECT_FALSE(none.render.samplesPerPixel.has_value());
@@ -882,6 +884,8 @@ TEST(ParserRender, Errors) {
   EXPECT_EQ(errorOf("render { height = 2.5; }\n"),
             "t.cfg:1:19: height must be a whole number from 1 to 16384, got 2.5");
   EXPECT_EQ(errorOf("render { filter = bilinear; }\n"), "t.cfg:1:19: filter must be point, box or coverage, got 'bilinear'");
+  EXPECT_EQ(errorOf("render { image_filter = box; }\n"),
+            "t.cfg:1:25: image_filter must be anisotropic, trilinear, bilinear, ewa or stochastic, got 'box'");
   EXPECT_EQ(errorOf("render { samples = 4; }\n"), "t.cfg:1:10: unknown key 'samples' in render");
   EXPECT_EQ(errorOf("render { }\nrender { }\n"), "t.cfg:2:1: duplicate render (first defined at t.cfg:1:1)");
 }

@@ -1,27 +1,38 @@
 // image: a picture file at its own size, bilinear at the hit (point) or averaged over the
-// footprint in its own mip chain (box). Oracle: sampleImageReference (host/reference_render.h).
+// footprint in its own mip chain (box; or by another method, IMAGE_FILTER: image_filters.glsl).
+// Oracle: sampleImageReference (host/reference_render.h).
 #ifndef RAYTEX_KIND_IMAGE_GLSL
 #define RAYTEX_KIND_IMAGE_GLSL
 
-// Element `index` of BINDING_IMAGES at st (REPEAT), mip level lod. Lavapipe cannot index a
-// sampler array with a variable, so a switch picks the element by constant indices, its cases
-// past IMAGE_COUNT compiled out (one image: no switch). The only place that names `images`:
-// the filters below are written once for every image.
-#define IMAGE_CASE(i) \
-  case i:             \
-    if (uint(i) < IMAGE_COUNT) return textureLod(images[i], st, lod); \
+// The lookups of element `index` of BINDING_IMAGES. Lavapipe cannot index a sampler array with
+// a variable, so IMAGE_SWITCH picks the element by constant indices, its cases past IMAGE_COUNT
+// compiled out (one image: no switch), and applies LOOKUP(images[i]) to it. The only place that
+// names `images`: the filters are written once for every image.
+#define IMAGE_CASE(i, LOOKUP) \
+  case i:                     \
+    if (uint(i) < IMAGE_COUNT) return LOOKUP(images[i]); \
     break;
-vec4 sampleImage(uint index, vec2 st, float lod) {
-  if (IMAGE_COUNT <= 1u) return textureLod(images[0], st, lod);
-  switch (int(index)) {
-    IMAGE_CASE(0) IMAGE_CASE(1) IMAGE_CASE(2) IMAGE_CASE(3) IMAGE_CASE(4) IMAGE_CASE(5) IMAGE_CASE(6)
-    IMAGE_CASE(7) IMAGE_CASE(8) IMAGE_CASE(9) IMAGE_CASE(10) IMAGE_CASE(11) IMAGE_CASE(12)
-    IMAGE_CASE(13) IMAGE_CASE(14) IMAGE_CASE(15)
-    default:
-      break;
-  }
+#define IMAGE_SWITCH(LOOKUP)                                                                          \
+  if (IMAGE_COUNT <= 1u) return LOOKUP(images[0]);                                                    \
+  switch (int(index)) {                                                                               \
+    IMAGE_CASE(0, LOOKUP) IMAGE_CASE(1, LOOKUP) IMAGE_CASE(2, LOOKUP) IMAGE_CASE(3, LOOKUP)           \
+    IMAGE_CASE(4, LOOKUP) IMAGE_CASE(5, LOOKUP) IMAGE_CASE(6, LOOKUP) IMAGE_CASE(7, LOOKUP)           \
+    IMAGE_CASE(8, LOOKUP) IMAGE_CASE(9, LOOKUP) IMAGE_CASE(10, LOOKUP) IMAGE_CASE(11, LOOKUP)         \
+    IMAGE_CASE(12, LOOKUP) IMAGE_CASE(13, LOOKUP) IMAGE_CASE(14, LOOKUP) IMAGE_CASE(15, LOOKUP)       \
+    default:                                                                                          \
+      break;                                                                                          \
+  }                                                                                                   \
   return vec4(0.0);
-}
+
+// At st (REPEAT), mip level lod, filtered by the sampler.
+#define IMAGE_LOD_LOOKUP(image) textureLod(image, st, lod)
+vec4 sampleImage(uint index, vec2 st, float lod) { IMAGE_SWITCH(IMAGE_LOD_LOOKUP) }
+
+#ifdef RAYTEX_FILTER_BOX
+// Texel `texel` of mip level `level` (texelFetch: no filtering, no wrap).
+#define IMAGE_TEXEL_LOOKUP(image) texelFetch(image, texel, level)
+vec4 fetchImage(uint index, ivec2 texel, int level) { IMAGE_SWITCH(IMAGE_TEXEL_LOOKUP) }
+#endif
 
 // An image texture as the host packed it (Material.imageIndex, imageSize): its element of
 // BINDING_IMAGES, its size in texels and mip levels, and which axes do not wrap.
@@ -64,7 +75,7 @@ vec3 imagePoint(Material m, TexCoord tc) {
 }
 
 #ifdef RAYTEX_FILTER_BOX
-// FILTER_BOX (docs/textures.md, "Image filtering"): trilinear lookups in the image's mip chain
+// FILTER_BOX's default (IMAGE_FILTER_ANISOTROPIC; docs/textures.md, "Image filtering"): trilinear lookups in the image's mip chain
 // (linear-light box averages built on the host) over the sample's footprint, the Jacobian
 // J = [dst/dx dst/dy] in texels. J's ellipse is split along its major axis into probes, each
 // at the level of the longer of the minor axis and the probe spacing (anisotropic filtering
@@ -82,7 +93,20 @@ const float IMAGE_SPHERE_PROBES = 32.0;
 // along the major axis equals the footprint's box).
 const float IMAGE_LOD_BIAS = -0.79248125;
 
-vec3 imageBox(Material m, TexCoord tc, Footprint fp) {
+// The footprint's Jacobian in level-0 texels: the steps of the lookup coordinate for one sample
+// step in x and in y. Near a sphere's poles du grows without bound, but no footprint covers more
+// than every u.
+void imageSteps(ImageInfo im, TexCoord tc, Footprint fp, out vec2 dx, out vec2 dy) {
+  vec2 dstdx = fp.dimagedx, dstdy = fp.dimagedy;
+  if (tc.clampV) {
+    dstdx.x = clamp(dstdx.x, -1.0, 1.0);
+    dstdy.x = clamp(dstdy.x, -1.0, 1.0);
+  }
+  dx = dstdx * im.size;
+  dy = dstdy * im.size;
+}
+
+vec3 imageAnisotropic(Material m, TexCoord tc, Footprint fp) {
   ImageInfo im = imageInfo(m, tc);
   vec2 st = imageCoord(im, tc);
   vec2 size = im.size;
@@ -103,14 +127,8 @@ vec3 imageBox(Material m, TexCoord tc, Footprint fp) {
     step = vec2(1.0 / k, 0.0);
     width2 = band * band * size.y * size.y;
   } else {
-    // Steps of st for one sample step in x and in y, in level-0 texels.
-    vec2 dstdx = fp.dimagedx, dstdy = fp.dimagedy;
-    // Near a sphere's poles du grows without bound, but no footprint covers more than every u.
-    if (tc.clampV) {
-      dstdx.x = clamp(dstdx.x, -1.0, 1.0);
-      dstdy.x = clamp(dstdy.x, -1.0, 1.0);
-    }
-    vec2 dx = dstdx * size, dy = dstdy * size;
+    vec2 dx, dy;
+    imageSteps(im, tc, fp, dx, dy);
     // Principal axes of the footprint: the eigenvalues of J J^T, J = [dx dy], are the squared
     // semi-axes of its ellipse (the lengths of dx and dy overstate the minor axis when they
     // are skewed, as on the sphere away from the equator).
@@ -144,6 +162,18 @@ vec3 imageBox(Material m, TexCoord tc, Footprint fp) {
   for (float i = 0.5 - 0.5 * k; i < 0.5 * k; i += 1.0)
     sum += sampleImage(im.index, clampToImage(im, st + i * step, texels), lod).rgb;
   return sum / k;
+}
+
+#include "image_filters.glsl"
+
+// The box kernel's image lookup: the method IMAGE_FILTER selects (a constant: the others
+// compile out).
+vec3 imageBox(Material m, TexCoord tc, Footprint fp) {
+  if (IMAGE_FILTER == IMAGE_FILTER_BILINEAR) return imagePoint(m, tc);
+  if (IMAGE_FILTER == IMAGE_FILTER_TRILINEAR) return imageTrilinear(m, tc, fp);
+  if (IMAGE_FILTER == IMAGE_FILTER_EWA) return imageEwa(m, tc, fp);
+  if (IMAGE_FILTER == IMAGE_FILTER_STOCHASTIC) return imageStochastic(m, tc, fp);
+  return imageAnisotropic(m, tc, fp);
 }
 #endif  // RAYTEX_FILTER_BOX
 

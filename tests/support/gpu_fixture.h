@@ -47,6 +47,7 @@ class RenderTest : public ::testing::Test {
     KernelOptions kernel;
     kernel.outputMode = mode;
     kernel.textureFilter = filter;
+    kernel.imageFilter = imageFilter_;
     kernel.samplesPerSide = samplesPerSide;
     kernel.progressive = perSample;
     kernel.bakeValues = baked;
@@ -63,6 +64,7 @@ class RenderTest : public ::testing::Test {
   }
 
   static inline Renderer* renderer_ = nullptr;
+  uint32_t imageFilter_ = IMAGE_FILTER_ANISOTROPIC;  // the box and coverage filters' image method
   int errorsBefore_ = 0;
 };
 
