@@ -88,25 +88,9 @@ make_scene() {
   "$root/scripts/course-scene.sh" "$1" >"$2" || die "could not make the $1 scene"
 }
 
-# One POV-Ray render; prints "trace_ms wall_ms".
-run_povray() {
-  local material=$1 log="$tmp/povray.log" png="$tmp/povray.png" t0 t1
-  rm -f "$png"
-  t0=$(now_ns)
-  if ! (cd "$tmp" && povray "+L$here" "+I$here/$material.pov" "+O$png" +FN "+W$width" "+H$height" \
-          "${pov_aa[@]}" "+WT$threads" -D -P >"$log" 2>&1); then
-    tail -n 20 "$log" >&2
-    die "povray failed on $material.pov"
-  fi
-  t1=$(now_ns)
-  [ -s "$png" ] || die "povray wrote no PNG for $material.pov"
-  # "  Trace Time:       0 hours  0 minutes  1 seconds (1.234 seconds)"
-  local trace
-  trace=$(tr '\r' '\n' <"$log" | sed -n 's/^ *Trace Time:.*(\([0-9.]*\) seconds).*/\1/p' | tail -n 1)
-  [ -n "$trace" ] || { tail -n 20 "$log" >&2; die "no Trace Time in POV-Ray's statistics for $material"; }
-  "$python" -c "import sys; print(f'{float(sys.argv[1]) * 1000:.3f} {(int(sys.argv[3]) - int(sys.argv[2])) / 1e6:.3f}')" \
-    "$trace" "$t0" "$t1"
-}
+# One POV-Ray render at the SPP's anti-aliasing; prints "trace_ms wall_ms".
+source "$here/povray_render.sh"
+run_povray() { povray_render "$1" "$tmp/povray.png" +FN "${pov_aa[@]}"; }
 
 # One raytex render process; prints "wall_ms render_ms" (render_ms: the --stats render phase,
 # which includes lavapipe's shader compile at the first dispatch; the fallback frame time).
