@@ -131,7 +131,8 @@ const CliOption kOptions[] = {
      "footprint's filter)",
      [](CliArgs& c, const std::string& f, const std::string& v) { c.render.imageFilter = parseImageFilter(f, v); }},
     {"--reference", nullptr, nullptr, kRender,
-     "render on the CPU in float64 (slow; the accuracy reference), no Vulkan",
+     "render on the CPU in float64 (slow; the accuracy reference), no Vulkan; samples per pixel from --spp "
+     "(default 1: docs/accuracy.md's reference is --spp 4096, 64 x 64)",
      [](CliArgs& c, const std::string&, const std::string&) { c.render.reference = true; }},
     {"--device", nullptr, "N", kAll,
      "Vulkan device index from `raytex devices` (default: the best GPU, else the CPU driver lavapipe)",
