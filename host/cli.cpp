@@ -1,4 +1,5 @@
 #include "cli.h"
+#include "suggest.h"
 
 #include "texture_kinds.h"
 
@@ -294,7 +295,12 @@ const CliOption& applyOption(const std::vector<std::string>& args, size_t* i, Cl
   std::optional<std::string> value;
   splitInline(args[*i], &name, &value);
   const CliOption* o = findOption(name);
-  if (!o) throw UsageError("unknown option '" + name + "' (try raytex --help)");
+  if (!o) {
+    std::vector<std::string> names;
+    for (const CliOption& option : kOptions) names.push_back(option.name);
+    const std::string near = didYouMean(name, names);
+    throw UsageError("unknown option '" + name + "'" + (near.empty() ? " (try raytex --help)" : near));
+  }
   const std::string command = args[0];
   if (!(o->commands & commandBit(cli->command)))
     throw UsageError(name + " is an option of raytex " + commandList(o->commands) + ", not of " + command);

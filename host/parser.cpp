@@ -2,6 +2,7 @@
 // cfg::Tokenizer (tokenizer.h) puts a FileLoc on every token; Parser reads blocks into a Scene.
 // Every error is a SceneError "file:line:col: message"; nothing else is thrown.
 #include "parser.h"
+#include "suggest.h"
 
 #include "read_policy.h"
 #include "scene_limits.h"
@@ -63,23 +64,6 @@ void parseText(State& st, const std::string& text, const std::string& file);
 const char* const kTopLevelKeywords[] = {"sphere", "plane",  "material",   "camera",
                                          "light",  "render", "background", "ambient_light"};
 
-// Levenshtein distance of a and b, or 3 when it is more than 2 (the only question asked).
-size_t editDistanceUpTo2(const std::string& a, const std::string& b) {
-  if ((a.size() > b.size() ? a.size() - b.size() : b.size() - a.size()) > 2) return 3;
-  std::vector<size_t> row(b.size() + 1);
-  for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (size_t i = 1; i <= a.size(); ++i) {
-    size_t diagonal = row[0];
-    row[0] = i;
-    for (size_t j = 1; j <= b.size(); ++j) {
-      size_t above = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
-      diagonal = above;
-    }
-  }
-  return std::min<size_t>(row[b.size()], 3);
-}
-
 // The top-level keyword within edit distance 2 of word (the closest), or nullptr.
 const char* nearKeyword(const std::string& word) {
   const char* best = nullptr;
@@ -89,6 +73,29 @@ const char* nearKeyword(const std::string& word) {
     if (d < bestDistance) best = k, bestDistance = d;
   }
   return best;
+}
+
+// The keys of a sphere or plane block (`where`), for "did you mean".
+std::vector<std::string> objectKeys(const std::string& where) {
+  std::vector<std::string> keys = {"material", "tex_scale", "tex_rotate", "tex_offset"};
+  if (where == "sphere") keys.insert(keys.end(), {"center", "radius"});
+  else keys.insert(keys.end(), {"normal", "distance"});
+  return keys;
+}
+
+const std::vector<std::string> kMaterialKeys = {"ambient", "diffuse", "specular", "shininess", "texture"};
+
+// The texture keys that apply to `info`'s kind.
+std::vector<std::string> kindKeys(const TextureKindInfo& info) {
+  std::vector<std::string> keys;
+  for (const TextureKey& k : info.keys) keys.push_back(k.name);
+  return keys;
+}
+
+std::vector<std::string> kindNames() {
+  std::vector<std::string> names;
+  for (const TextureKindInfo& k : textureKinds()) names.push_back(k.name);
+  return names;
 }
 
 // A file is a scene when it has no token at all, or its first token is #include, a top-level
@@ -255,7 +262,11 @@ class Parser {
 
   int lookupMaterial(const Token& name) {
     auto it = st_.materialIndex.find(name.text);
-    if (it == st_.materialIndex.end()) fail(name.loc, "unknown material " + quote(name.text));
+    if (it == st_.materialIndex.end()) {
+      std::vector<std::string> names;
+      for (const Material& m : st_.scene.materials) names.push_back(m.name);
+      fail(name.loc, "unknown material " + quote(name.text) + didYouMean(name.text, names));
+    }
     return it->second;
   }
 
@@ -267,7 +278,8 @@ class Parser {
       semicolon("the material name");
       return;
     }
-    if (peek().kind == Tok::Equals) fail(key.loc, "unknown key " + quote(key.text) + " in " + where);
+    if (peek().kind == Tok::Equals)
+      fail(key.loc, "unknown key " + quote(key.text) + " in " + where + didYouMean(key.text, objectKeys(where)));
     *material = lookupMaterial(key);
     semicolon("material name " + quote(key.text));
   }
@@ -389,7 +401,7 @@ class Parser {
         return;
       } else {
         failPlacementKey(key, where);
-        fail(key.loc, "unknown key " + quote(key.text) + " in " + where);
+        fail(key.loc, "unknown key " + quote(key.text) + " in " + where + didYouMean(key.text, kMaterialKeys));
       }
       semicolon("the value of " + quote(key.text));
     });
@@ -401,7 +413,11 @@ class Parser {
   TextureDesc parseTexture() {
     Token kindTok = expect(Tok::Ident, "a texture kind after 'texture ='");
     const TextureKindInfo* info = findTextureKind(kindTok.text);
-    if (!info) fail(kindTok.loc, "unknown texture kind " + quote(kindTok.text) + " (expected " + textureKindList() + ")");
+    if (!info) {
+      const std::string near = didYouMean(kindTok.text, kindNames());
+      fail(kindTok.loc, "unknown texture kind " + quote(kindTok.text) +
+                            (near.empty() ? " (expected " + textureKindList() + ")" : near));
+    }
     TextureDesc t = info->defaults;
     t.loc = kindTok.loc;
     std::string where = std::string(info->name) + " texture";
@@ -413,7 +429,7 @@ class Parser {
         const TextureKey* k = findKindKey(*info, key.text);
         if (!k && !findTextureKey(key.text)) {
           failPlacementKey(key, where);
-          fail(key.loc, "unknown key " + quote(key.text) + " in " + where);
+          fail(key.loc, "unknown key " + quote(key.text) + " in " + where + didYouMean(key.text, kindKeys(*info)));
         }
         if (!k) fail(key.loc, "'" + key.text + "' does not apply to " + info->name + " textures");
         assign(key, seen, where);
@@ -550,7 +566,8 @@ class Parser {
   void assignKnown(const Token& key, Seen& seen, const std::string& where, std::initializer_list<const char*> keys) {
     for (const char* k : keys)
       if (key.text == k) return assign(key, seen, where);
-    fail(key.loc, "unknown key " + quote(key.text) + " in " + where);
+    fail(key.loc, "unknown key " + quote(key.text) + " in " + where +
+                      didYouMean(key.text, std::vector<std::string>(keys.begin(), keys.end())));
   }
 
   void topColor(const Token& kw, glm::vec3* out, FileLoc* given) {

@@ -11,7 +11,8 @@ expect no-args 2 '^raytex: missing command' -- "$raytex"
 expect unknown-command 2 "unknown command 'draw'" -- "$raytex" draw x
 expect no-scene 2 'render needs a scene file' -- "$raytex" render
 expect bad-width 2 '--width expects an integer from 1 to 16384' -- "$raytex" render s.cfg --width 0
-expect bad-option 2 "unknown option '--fast'" -- "$raytex" render s.cfg --fast
+expect bad-option 2 "unknown option '--fast' \\(try raytex --help\\)$" -- "$raytex" render s.cfg --fast
+expect near-option 2 "^raytex: unknown option '--fliter' \\(did you mean '--filter'\\?\\)$" -- "$raytex" render s.cfg --fliter box
 expect missing-scene 2 "^$tmp/none.cfg: cannot open" -- "$raytex" render "$tmp/none.cfg"
 
 # The scenes and images of the course, copied: the variants below are written beside them.

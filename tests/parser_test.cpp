@@ -352,13 +352,23 @@ TEST(ParserSyntax, CameraLightsBackground) {
 // ---------------------------------------------------------------- errors
 
 TEST(ParserErrors, UnknownKeys) {
-  EXPECT_EQ(errorOf("sphere {\n  radiuss = 2;\n}\n"), "t.cfg:2:3: unknown key 'radiuss' in sphere");
-  EXPECT_EQ(errorOf("plane { tex_scal = 2; }"), "t.cfg:1:9: unknown key 'tex_scal' in plane");
-  EXPECT_EQ(errorOf("light { colour = (1,1,1); }"), "t.cfg:1:9: unknown key 'colour' in light");
-  EXPECT_EQ(errorOf("camera { fovy = 30; }"), "t.cfg:1:10: unknown key 'fovy' in camera");
-  EXPECT_EQ(errorOf("material m {\n  difuse = (1,1,1);\n}"), "t.cfg:2:3: unknown key 'difuse' in material 'm'");
+  EXPECT_EQ(errorOf("sphere {\n  radiuss = 2;\n}\n"), "t.cfg:2:3: unknown key 'radiuss' in sphere (did you mean 'radius'?)");
+  EXPECT_EQ(errorOf("plane { tex_scal = 2; }"), "t.cfg:1:9: unknown key 'tex_scal' in plane (did you mean 'tex_scale'?)");
+  EXPECT_EQ(errorOf("light { colour = (1,1,1); }"), "t.cfg:1:9: unknown key 'colour' in light (did you mean 'color'?)");
+  EXPECT_EQ(errorOf("camera { fovy = 30; }"), "t.cfg:1:10: unknown key 'fovy' in camera (did you mean 'fov'?)");
+  EXPECT_EQ(errorOf("material m {\n  difuse = (1,1,1);\n}"), "t.cfg:2:3: unknown key 'difuse' in material 'm' (did you mean 'diffuse'?)");
   EXPECT_EQ(errorOf("material m { texture = noise { size = 1; } }"),
             "t.cfg:1:32: unknown key 'size' in noise texture");
+  // "did you mean": the nearest key of the block, kind, material or top-level keyword within
+  // edit distance 2; none further off.
+  EXPECT_EQ(errorOf("material m { texture = marble { scal = 2; } }"),
+            "t.cfg:1:33: unknown key 'scal' in marble texture (did you mean 'scale'?)");
+  EXPECT_EQ(errorOf("render { fliter = box; }"), "t.cfg:1:10: unknown key 'fliter' in render (did you mean 'filter'?)");
+  EXPECT_EQ(errorOf("sphere { centre = (0, 0, 0); }"), "t.cfg:1:10: unknown key 'centre' in sphere (did you mean 'center'?)");
+  EXPECT_EQ(errorOf("sphere { colour = (0, 0, 0); }"), "t.cfg:1:10: unknown key 'colour' in sphere");
+  EXPECT_EQ(errorOf("material marble1 { }\nsphere { marble2; }"),
+            "t.cfg:2:10: unknown material 'marble2' (did you mean 'marble1'?)");
+  EXPECT_EQ(errorOf("material m { }\nsphere { wood; }"), "t.cfg:2:10: unknown material 'wood'");
 }
 
 TEST(ParserErrors, UnknownTopLevelKeyword) {
@@ -506,7 +516,9 @@ TEST(ParserErrors, Textures) {
   EXPECT_EQ(errorOf("material m { texture = solid_checker { scale = 2; } }"),
             "t.cfg:1:40: 'scale' does not apply to solid_checker textures");
   EXPECT_EQ(errorOf("material m { texture = checkr; }"),
-            "t.cfg:1:24: unknown texture kind 'checkr' (expected " + textureKindList() + ")");
+            "t.cfg:1:24: unknown texture kind 'checkr' (did you mean 'checker'?)");
+  EXPECT_EQ(errorOf("material m { texture = stripes; }"),
+            "t.cfg:1:24: unknown texture kind 'stripes' (expected " + textureKindList() + ")");
   EXPECT_EQ(errorOf("material m { texture = image { } }"), "t.cfg:1:24: image texture needs 'file = \"path\";'");
   EXPECT_EQ(errorOf("material m { texture = checker { wrap = clamp; } }"),
             "t.cfg:1:34: 'wrap' does not apply to checker textures");
@@ -660,7 +672,7 @@ TEST_F(ParserFiles, IncludeDepthLimit) {
 TEST_F(ParserFiles, ErrorsInsideAnIncludedFileReferToThatFile) {
   write("inc/mats.cfg", "material m {\n  difuse = (1, 1, 1);\n}\n");
   std::string main = write("main.cfg", "#include \"inc/mats.cfg\"\n");
-  EXPECT_EQ(fileErrorOf(main), path("inc/mats.cfg") + ":2:3: unknown key 'difuse' in material 'm'");
+  EXPECT_EQ(fileErrorOf(main), path("inc/mats.cfg") + ":2:3: unknown key 'difuse' in material 'm' (did you mean 'diffuse'?)");
   write("inc/dup.cfg", "material m { }\n");
   std::string twice = write("twice.cfg", "#include \"inc/dup.cfg\"\n#include \"inc/dup.cfg\"\n");
   EXPECT_EQ(fileErrorOf(twice),

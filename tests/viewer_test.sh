@@ -13,7 +13,9 @@ done
 tmp=$(mktemp -d)
 display=""
 for n in $(seq 90 120); do [ -e /tmp/.X11-unix/X$n ] || { display=":$n"; break; }; done
-Xvfb "$display" -screen 0 800x600x24 >/dev/null 2>&1 &
+# -noreset: the server does not reset when its last client leaves, so a viewer started just
+# after another exits finds the display (a reset in between refused it: "no display").
+Xvfb "$display" -screen 0 800x600x24 -noreset >/dev/null 2>&1 &
 xvfb=$!
 viewer=""
 cleanup() {
