@@ -251,6 +251,7 @@ class Parser {
       if (t.kind == Tok::End) fail(open.loc, "'{' of " + what + " is never closed");
       if (t.kind == Tok::Include) fail(t.loc, "#include is only allowed at top level");
       if (t.kind != Tok::Ident) fail(t.loc, "expected a key or '}' in " + what + ", got " + describe(t));
+      failMaterialKeyword(what);
       if (isBlockKeyword(t.text) && peek(1).kind != Tok::Equals && peek(1).kind != Tok::Semi)
         fail(open.loc, "'{' of " + what + " is never closed (a " + quote(t.text) + " block starts at " +
                            std::to_string(t.loc.line) + ":" + std::to_string(t.loc.column) + ")");
@@ -258,6 +259,16 @@ class Parser {
     }
     take();
     if (peek().kind == Tok::Semi) take();
+  }
+
+  // `material NAME;` inside a sphere or plane reads as a material block left open: say how to
+  // write what was meant.
+  void failMaterialKeyword(const std::string& what) {
+    if (what != "sphere" && what != "plane") return;
+    const Token& t = peek();
+    if (t.text != "material" || peek(1).kind != Tok::Ident || peek(2).kind != Tok::Semi) return;
+    const std::string name = peek(1).text;
+    fail(t.loc, "'material " + name + ";' inside a " + what + ": write '" + name + ";' or 'material = " + name + ";'");
   }
 
   int lookupMaterial(const Token& name) {

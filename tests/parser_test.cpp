@@ -369,6 +369,11 @@ TEST(ParserErrors, UnknownKeys) {
   EXPECT_EQ(errorOf("material marble1 { }\nsphere { marble2; }"),
             "t.cfg:2:10: unknown material 'marble2' (did you mean 'marble1'?)");
   EXPECT_EQ(errorOf("material m { }\nsphere { wood; }"), "t.cfg:2:10: unknown material 'wood'");
+  // `material NAME;` in an object, which would read as an unclosed block.
+  EXPECT_EQ(errorOf("material red { }\nsphere { radius = 1; material red; }"),
+            "t.cfg:2:22: 'material red;' inside a sphere: write 'red;' or 'material = red;'");
+  EXPECT_EQ(errorOf("material red { }\nplane { material red; }"),
+            "t.cfg:2:9: 'material red;' inside a plane: write 'red;' or 'material = red;'");
 }
 
 TEST(ParserErrors, UnknownTopLevelKeyword) {
