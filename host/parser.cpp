@@ -121,6 +121,19 @@ void checkReadable(const State& st, const Token& name, const std::string& path) 
   if (!mayRead(st.policy, path)) fail(name.loc, "'" + path + "' is outside the directories --allow-read allows");
 }
 
+// For an #include that names no file: where includes are looked for, and for the course's
+// materials file, where its copy is.
+std::string includeHint(const std::string& name, const std::string& path, const std::string& includingFile) {
+  std::error_code error;
+  if (fs::exists(path, error)) return "";
+  std::string dir = fs::path(includingFile).parent_path().string();
+  std::string hint = ": an #include is relative to the including file's directory (" + (dir.empty() ? "." : dir) + ")";
+  if (fs::path(name).filename() == "texture_include.cfg")
+    hint += "; the course's materials are scenes/texture_include.cfg in raytex's source tree: copy it beside "
+            "the scene or #include its path";
+  return hint;
+}
+
 // Words that cannot name a material (they would read as keys or blocks).
 bool isReserved(const std::string& w) {
   static const char* const words[] = {"sphere", "plane", "camera",    "light",    "material", "render", "background",
@@ -605,7 +618,7 @@ class Parser {
       fail(directive.loc, "cyclic #include of '" + path + "' (" + chain + path + ")");
     }
     std::string text;
-    if (!readTextFile(path, &text)) fail(directive.loc, "cannot open included file '" + path + "'");
+    if (!readTextFile(path, &text)) fail(directive.loc, "cannot open included file '" + path + "'" + includeHint(name.text, path, file_));
     if (!isSceneText(text, path)) fail(directive.loc, "'" + path + "' is not a scene file");
     st_.scene.files.push_back(path);
     parseText(st_, text, path);

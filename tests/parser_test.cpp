@@ -638,8 +638,14 @@ TEST_F(ParserFiles, AFileWithNoObjectIsAnError) {
 
 TEST_F(ParserFiles, IncludeNotFound) {
   std::string main = write("main.cfg", "// materials\n  #include \"missing.cfg\"\n");
-  EXPECT_EQ(fileErrorOf(main), main + ":2:3: cannot open included file '" + path("missing.cfg") + "'");
-  // A directory is not a file either.
+  const std::string relative = ": an #include is relative to the including file's directory (" + dir_.string() + ")";
+  EXPECT_EQ(fileErrorOf(main), main + ":2:3: cannot open included file '" + path("missing.cfg") + "'" + relative);
+  // The course's materials file: where its copy is.
+  std::string course = write("course.cfg", "#include \"texture_include.cfg\"\n");
+  EXPECT_EQ(fileErrorOf(course), course + ":1:1: cannot open included file '" + path("texture_include.cfg") + "'" +
+                                     relative + "; the course's materials are scenes/texture_include.cfg in raytex's "
+                                     "source tree: copy it beside the scene or #include its path");
+  // A directory is not a file either (it exists: no hint).
   fs::create_directories(dir_ / "adir");
   std::string d = write("d.cfg", "#include \"adir\"\n");
   EXPECT_EQ(fileErrorOf(d), d + ":1:1: cannot open included file '" + path("adir") + "'");
