@@ -157,7 +157,7 @@ void renderPrepared(Renderer& renderer, const Scene& scene, const GpuScene& gpuS
   const int errorsBefore = renderer.device.validationErrors;
   renderer.passMask = passMask(output.options.passes);
   renderer.coverage = job.filter == TextureFilter::Coverage;
-  if (renderer.device.lavapipe) checkLoopLimit(scene, renderer.coverage ? 2 : 1);
+  if (renderer.device.lavapipe) checkLoopLimit(scene, loopTraces(renderer.coverage));
   output.eye = scene.camera.eye;
   const bool perSample = samplesPerDispatch(renderer, scene, gpuScene, job);
   renderer.accumulate = perSample;

@@ -36,3 +36,6 @@ inline uint64_t loopIterationsPerSample(const Scene& scene) {
 // pass it are dispatched one at a time (headless.cpp). A sphere tree's walks are counted while
 // the kernel runs.
 void checkLoopLimit(const Scene& scene, uint32_t traces = 1);
+
+// The `traces` for checkLoopLimit of a render with or without the coverage filter.
+inline uint32_t loopTraces(bool coverage) { return coverage ? 2u : 1u; }

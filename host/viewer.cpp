@@ -75,7 +75,7 @@ struct ImageLimits {
   PackOptions pack;  // every material (a key switches to it), mip chains for the filtered kernel
   uint32_t maxImageDimension2D = 0;  // the device's
   bool lavapipe = false;  // its driver's loop limit applies (scene_limits.h)
-  uint32_t traces = 1;    // traces a sample's dispatches nest: 2 with the coverage filter's edge pass
+  uint32_t traces = 1;    // checkLoopLimit's: loopTraces
 };
 
 int materialIndex(const Scene& scene, const char* name) {
@@ -382,7 +382,7 @@ void openViewer(Viewer& v, const RenderOptions& options) {
   v.renderer.accumulate = true;
   v.renderer.coverage = v.job.filter == TextureFilter::Coverage;
   createRenderer(v.renderer, device);
-  if (v.renderer.device.lavapipe) checkLoopLimit(v.state.scene, v.renderer.coverage ? 2 : 1);
+  if (v.renderer.device.lavapipe) checkLoopLimit(v.state.scene, loopTraces(v.renderer.coverage));
   createSwapchain(v.window, v.renderer.device);
   v.renderer.displayBgra = windowBgra(v.window);
 }
@@ -470,7 +470,7 @@ void pollAndTitle(Viewer& v, const RenderOptions& options) {
   if (now - v.lastTitle <= std::chrono::milliseconds(250)) return;
   const VkPhysicalDeviceLimits& device = v.renderer.device.properties.limits;
   reloadIfChanged(v.state, options.scene, ReadPolicy{options.allowRead}, v.fileTimes,
-                  {v.pack, device.maxImageDimension2D, v.renderer.device.lavapipe, v.renderer.coverage ? 2u : 1u});
+                  {v.pack, device.maxImageDimension2D, v.renderer.device.lavapipe, loopTraces(v.renderer.coverage)});
   const double frameMs = v.stats.frameMs.empty() ? 0.0 : v.stats.frameMs.back();
   glfwSetWindowTitle(v.window.window, title(v.state, v.samples, v.target, frameMs, v.renderer.lastFrameMs).c_str());
   v.lastTitle = now;
