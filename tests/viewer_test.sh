@@ -38,10 +38,16 @@ for _ in $(seq 50); do xdotool getdisplaygeometry >/dev/null 2>&1 && break; slee
 # be checked: the viewer's last output lines, and exit.
 waitWindow() {
   wid=""
-  for _ in $(seq 600); do wid=$(xdotool search --name '^raytex' 2>/dev/null | head -1); [ -n "$wid" ] && break; sleep 0.1; done
+  log=$1
+  for _ in $(seq 600); do
+    wid=$(xdotool search --all --pid "$viewer" --name '^raytex' 2>/dev/null | head -1)
+    [ -n "$wid" ] && break
+    kill -0 "$viewer" 2>/dev/null || break
+    sleep 0.1
+  done
   if [ -z "$wid" ]; then
     echo "FAIL $2; the viewer's output:"
-    tail -5 "$1"
+    tail -20 "$1"
     exit 1
   fi
   check "$2" test -n "$wid"
@@ -52,10 +58,42 @@ waitWindow() {
 viewer=$!
 waitWindow "$tmp/view.log" window-opens
 title() { xdotool getwindowname "$wid"; }
+# viewerGone: the viewer has exited; its last output lines are printed once, and the checks
+# that wait on its window fail at once instead of each waiting out its time.
+viewerGone() {
+  [ -n "$viewer" ] && kill -0 "$viewer" 2>/dev/null && return 1
+  if [ -z "${goneReported:-}" ]; then
+    goneReported=1
+    wait "$viewer"
+    echo "the viewer exited (status $?); its output:"
+    tail -20 "$log"
+  fi
+  return 0
+}
 waitTitle() {  # waitTitle PATTERN: the title matches within 30 s (a loaded machine, the sanitizers)
-  for _ in $(seq 300); do title | grep -q -- "$1" && return 0; sleep 0.1; done
-  echo "title: $(title)"
+  for _ in $(seq 300); do
+    viewerGone && return 1
+    title 2>/dev/null | grep -q -- "$1" && return 0
+    sleep 0.1
+  done
+  echo "title: $(title 2>&1)"
   return 1
+}
+# stopViewer: Escape, then the viewer's exit status within 30 s (killed and 124 after that).
+stopViewer() {
+  if viewerGone; then
+    rc=1
+  else
+    xdotool key --window "$wid" Escape 2>/dev/null
+    for _ in $(seq 300); do kill -0 "$viewer" 2>/dev/null || break; sleep 0.1; done
+    local killed=0
+    kill -0 "$viewer" 2>/dev/null && { kill -9 "$viewer"; killed=1; }
+    wait "$viewer"
+    rc=$?
+    [ "$killed" -eq 1 ] && rc=124
+  fi
+  viewer=""
+  goneReported=""
 }
 check initial-materials waitTitle 'sphere: aSolidChecker | plane: aChecker'
 check accumulates waitTitle '| 64/64 samples'
@@ -74,7 +112,11 @@ cp "$tmp/shot.png" "$tmp/first.png"
 waitShot() {  # waitShot: F12, then the new file appears
   rm -f "$tmp/shot.png"
   xdotool key --window "$wid" F12
-  for _ in $(seq 300); do [ -s "$tmp/shot.png" ] && return 0; sleep 0.1; done
+  for _ in $(seq 300); do
+    [ -s "$tmp/shot.png" ] && return 0
+    viewerGone && return 1
+    sleep 0.1
+  done
   return 1
 }
 xdotool key --window "$wid" d d w
@@ -90,11 +132,7 @@ cp "$tmp/first.png" "$tmp/shot.png"
 # sRGB curve, so within 1 of the PNG), compared with the headless render below.
 check window-converged waitTitle '| 64/64 samples'
 xwd -id "$wid" -silent >"$tmp/window.xwd"
-xdotool key --window "$wid" Escape
-for _ in $(seq 100); do kill -0 "$viewer" 2>/dev/null || break; sleep 0.1; done
-wait "$viewer"
-rc=$?
-viewer=""
+stopViewer
 check clean-exit test "$rc" -eq 0
 check no-validation-errors test "$(grep -c 'validation error' "$tmp/view.log")" -eq 0
 
@@ -147,11 +185,8 @@ check reload-output-refused-title waitTitle 'not saved'
 check reload-output-refused-message grep -q "refusing to write '$tmp/scenes/shot.png': it is an image the scene uses" \
   "$tmp/reload.log"
 check reload-output-unchanged cmp -s "$src/textures/uv_grid.png" "$tmp/scenes/shot.png"
-xdotool key --window "$wid" Escape
-wait "$viewer"
-rc=$?
+stopViewer
 check reload-clean-exit test "$rc" -eq 0 || tail -5 "$tmp/reload.log"
-viewer=""
 
 # The coverage filter: each sample's edge pass writes its listed pixels' sums and display
 # pixels, so the window and F12 show the render's image (bit for bit in the PNG), after a key
@@ -167,10 +202,7 @@ check coverage-converged waitTitle '| 16/16 samples'
 xdotool key --window "$wid" F12
 check coverage-screenshot waitTitle "wrote $tmp/coverage-shot.png"
 xwd -id "$wid" -silent >"$tmp/coverage.xwd"
-xdotool key --window "$wid" Escape
-wait "$viewer"
-rc=$?
-viewer=""
+stopViewer
 check coverage-clean-exit test "$rc" -eq 0 || tail -5 "$tmp/coverage.log"
 check coverage-no-validation-errors test "$(grep -c 'validation error' "$tmp/coverage.log")" -eq 0
 sed -e 's|^    aSolidChecker;|    // aSolidChecker;|' -e 's|^    // aMarble;|    aMarble;|' "$src/scenes/textures.cfg" \
