@@ -6,6 +6,7 @@
 #include "output_file.h"
 #include "parser.h"
 #include "render_output.h"
+#include "scene_notes.h"
 #include "renderer.h"
 #include "world_position.h"
 
@@ -27,6 +28,7 @@ namespace {
 // Parses the scene, loads its images and packs it: bad input fails before any Vulkan.
 GpuScene prepareScene(const RenderOptions& options, Scene* scene, HeadlessRender* out) {
   *scene = parseSceneFile(options.scene, ReadPolicy{options.allowRead});
+  printSceneNotes(*scene, stderr);
   out->job = resolveJob(options, scene->render, 1);
   checkRenderOutputs(options, out->job, *scene);
   PackOptions pack;

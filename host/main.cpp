@@ -11,6 +11,7 @@
 #include "parser.h"
 #include "reference_render.h"
 #include "render_output.h"
+#include "scene_notes.h"
 #include "viewer.h"
 
 #include <chrono>
@@ -47,6 +48,7 @@ int failureCode(ErrorKind kind, bool diff) { return diff ? 2 : exitCode(kind); }
 void runReference(const RenderOptions& options) {
   Clock::time_point start = Clock::now(), t = start;
   Scene scene = parseSceneFile(options.scene, ReadPolicy{options.allowRead});
+  printSceneNotes(scene, stderr);
   const RenderJob job = resolveJob(options, scene.render, 1);
   checkRenderOutputs(options, job, scene);
   const double parseMs = lapMs(t);

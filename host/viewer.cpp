@@ -8,6 +8,7 @@
 #include "output_file.h"
 #include "parser.h"
 #include "render_output.h"
+#include "scene_notes.h"
 #include "renderer.h"
 #include "window.h"
 
@@ -195,6 +196,7 @@ void reloadIfChanged(ViewerState& state, const std::string& path, const ReadPoli
     GpuScene gpuScene = buildGpuScene(scene, 1, 1, limits.pack);
     std::string over = imagesOverDeviceLimits(gpuScene.images, limits.maxImageDimension2D);
     if (!over.empty()) throw VulkanError(over);
+    printSceneNotes(scene, stderr);
     state.scene = std::move(scene);
     state.reloaded = std::move(gpuScene);
     state.orbit = orbitOf(state.scene.camera);
@@ -350,6 +352,7 @@ struct Viewer {
 void loadScene(Viewer& v, const RenderOptions& options) {
   ViewerState& state = v.state;
   state.scene = parseSceneFile(options.scene, ReadPolicy{options.allowRead});
+  printSceneNotes(state.scene, stderr);
   checkOutput(options.output, state.scene);  // F12 writes -o
   v.job = resolveJob(options, state.scene.render, kViewerSamplesPerPixel);
   v.target = v.job.samplesPerSide * v.job.samplesPerSide;

@@ -20,6 +20,20 @@ mkdir -p "$tmp/course"
 cp -r "$src/scenes" "$src/textures" "$tmp/course/"
 course=$tmp/course/scenes
 
+# A sphere left in the default material while the scene defines textured ones: one note on
+# stderr at the sphere, naming how to give it one; the render goes on (exit 0, image written).
+# A scene whose objects all name a material gets none.
+sed 's|^    aSolidChecker;|    // aSolidChecker;|' "$course/textures.cfg" >"$course/plain.cfg"
+"$raytex" render "$course/plain.cfg" -o "$tmp/plain.png" --width 16 --height 12 2>"$tmp/plain.err"
+check default-material-exit-0 test $? -eq 0
+check default-material-output test -s "$tmp/plain.png"
+check default-material-one-note test "$(wc -l <"$tmp/plain.err")" -eq 1
+check default-material-note grep -qE "^$course/plain.cfg:29:1: note: this sphere names no material, so it is plain \
+grey \(the default material\); the scene defines textured materials \(aChecker, aSolidChecker, aNoise, aMarble, \
+\.\.\.\): to use one, name it inside the object's block, e\.g\. 'aChecker;'\$" "$tmp/plain.err"
+"$raytex" render "$course/textures.cfg" -o "$tmp/textured.png" --width 16 --height 12 2>"$tmp/textured.err"
+check textured-no-note test ! -s "$tmp/textured.err"
+
 printf 'sphere {\n  center = (0, 0, 0);\n  radiuss = 2;\n}\n' >"$tmp/typo.cfg"
 expect scene-error 2 "^$tmp/typo.cfg:3:3: " -- "$raytex" render "$tmp/typo.cfg" -o "$tmp/typo.png"
 check scene-error-no-output test ! -e "$tmp/typo.png"
