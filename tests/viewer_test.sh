@@ -212,5 +212,28 @@ sed -e 's|^    aSolidChecker;|    // aSolidChecker;|' -e 's|^    // aMarble;|   
 check coverage-screenshot-equals-render cmp -s "$tmp/coverage-shot.png" "$tmp/coverage-render.png"
 check coverage-window-shows-render "$xwdDiff" "$tmp/coverage.xwd" "$tmp/coverage-render.png" 1
 
+# The tutorial's last step (docs/tutorial.md, step 8): its scene as mine/first.cfg beside textures/;
+# converged, F12 writes the image raytex render --spp 64 writes; changing marble to wood and
+# saving reloads the window.
+mkdir -p "$tmp/tutorial/mine"
+ln -s "$src/textures" "$tmp/tutorial/textures"
+bash "$src/tests/tutorial_steps.sh" "$src/docs/tutorial.md" "$tmp/tutorial/steps" >/dev/null
+cp "$tmp/tutorial/steps/step-7.cfg" "$tmp/tutorial/mine/first.cfg"
+"$raytex" view "$tmp/tutorial/mine/first.cfg" -o "$tmp/tutorial/mine/shot.png" --width 160 --height 120 --validate \
+  >"$tmp/tutorial.log" 2>&1 &
+viewer=$!
+waitWindow "$tmp/tutorial.log" tutorial-window-opens
+check tutorial-materials waitTitle 'sphere: stone | plane: floor'
+check tutorial-converged waitTitle '| 64/64 samples'
+xdotool key --window "$wid" F12
+check tutorial-screenshot waitTitle "wrote $tmp/tutorial/mine/shot.png"
+"$raytex" render "$tmp/tutorial/mine/first.cfg" -o "$tmp/tutorial/render.png" --width 160 --height 120 --spp 64
+check tutorial-screenshot-equals-render cmp -s "$tmp/tutorial/mine/shot.png" "$tmp/tutorial/render.png"
+sed -i 's|texture = marble { }|texture = wood { }|' "$tmp/tutorial/mine/first.cfg"
+check tutorial-reload waitTitle 'sphere: stone .*reloaded'
+stopViewer
+check tutorial-clean-exit test "$rc" -eq 0 || tail -5 "$tmp/tutorial.log"
+check tutorial-no-validation-errors test "$(grep -c 'validation error' "$tmp/tutorial.log")" -eq 0
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]
