@@ -2,14 +2,17 @@
 
 #include "scene_limits.h"
 
+#include "camera_block.h"
 #include "gpu_scene.h"
 #include "image_io.h"
 #include "median.h"
 #include "output_file.h"
+#include "overlay.h"
 #include "parser.h"
 #include "render_output.h"
 #include "scene_notes.h"
 #include "renderer.h"
+#include "selection.h"
 #include "window.h"
 
 #include <GLFW/glfw3.h>
@@ -26,9 +29,30 @@
 
 namespace {
 
-// The course's materials, in the order of the notes; keys 1-8 put them on the sphere.
+// The course's materials, in the order of the notes; keys 1-8 put them on the selection.
 const char* const kCourseMaterials[] = {"aSolidChecker", "aNoise",      "aMarble",      "aWood",
                                         "anImage",       "aTurbulence", "aDturbulence", "aChecker"};
+constexpr size_t kCourseMaterialCount = sizeof(kCourseMaterials) / sizeof(kCourseMaterials[0]);
+
+// Every key, as H shows them over the image: the key, a tab, what it does.
+const std::vector<std::string> kHelpLines = {
+    "1 - 8\tcourse material on the selection (or every sphere)",
+    "M\tnext material: the scene's own, then the course's",
+    "P\tnext course material on the planes",
+    "Tab\tselect the object under the cursor",
+    "drag, arrows, WASD\torbit",
+    "scroll, + -, PgUp PgDn\tzoom",
+    "R\tthe scene file's camera",
+    "C\tprint the camera as a camera { } block",
+    "Z (hold)\tmagnifier; uv and texel in the title",
+    "U\tuv pass (red u, green v)",
+    "F12\twrite the image (every sample in)",
+    "H\tthis help",
+    "Esc, Q\tquit",
+};
+
+// How long a message stays in the title.
+constexpr std::chrono::seconds kMessageTime{3};
 
 // The camera orbits its lookat point about the scene's up axis: eye = lookat + radius *
 // (cos(elevation) (cos(azimuth) e1 + sin(azimuth) e2) + sin(elevation) up).
@@ -62,10 +86,18 @@ struct ViewerState {
   bool cameraMoved = false;  // the camera or an object's material changed: re-pack the objects
   bool dragging = false;
   double lastX = 0.0, lastY = 0.0;
+  double cursorX = 0.0, cursorY = 0.0;  // in the image's pixels
   bool screenshot = false;   // write the image to the output PNG once it has every sample
-  bool refresh = false;      // the window needs the image again (exposed)
+  bool refresh = false;      // the window needs the image again (exposed, an overlay changed)
   int planeMaterial = -1;    // index into kCourseMaterials for P cycling
-  std::string message;      // shown in the title (e.g. a material the scene does not define)
+  Selection selection;       // Tab: what 1-8 and M change (nothing: every sphere)
+  bool help = false;         // H: the keys over the image
+  bool magnifier = false;    // Z held: the pixels around the cursor enlarged
+  bool uvPass = false;       // U: the uv pass instead of the image
+  bool sceneError = false;   // the scene's files on disk do not load; the last good scene shows
+  bool specialisedPending = false;  // the all-kinds kernel renders until the specialised ones are compiled
+  std::string message;       // shown in the title for kMessageTime (e.g. "wrote shot.png")
+  Clock::time_point messageAt;
   std::optional<Clock::time_point> switchedAt;  // a material key, until its frame is shown
   std::optional<GpuScene> reloaded;  // a reloaded scene's GPU data, its images checked and decoded
 };
@@ -98,7 +130,24 @@ void moveCamera(ViewerState& state, double dAzimuth, double dElevation, double z
   glm::dvec3 dir = std::cos(o.elevation) * (std::cos(o.azimuth) * o.e1 + std::sin(o.azimuth) * o.e2) +
                    std::sin(o.elevation) * o.up;
   state.scene.camera.eye = state.scene.camera.lookat + o.radius * dir;
+  state.scene.camera = printedCamera(state.scene.camera);  // what C prints is exactly this view
   state.cameraMoved = true;
+}
+
+// A message in the title for kMessageTime.
+void say(ViewerState& state, std::string message) {
+  state.message = std::move(message);
+  state.messageAt = Clock::now();
+}
+
+// The cursor's position in the image's pixels (the framebuffer's, which may differ from the
+// window's coordinates), and the image's size.
+void cursorPixel(GLFWwindow* window, double x, double y, ViewerState& state) {
+  int windowW = 0, windowH = 0, pixelsW = 0, pixelsH = 0;
+  glfwGetWindowSize(window, &windowW, &windowH);
+  glfwGetFramebufferSize(window, &pixelsW, &pixelsH);
+  state.cursorX = windowW > 0 ? x * pixelsW / windowW : x;
+  state.cursorY = windowH > 0 ? y * pixelsH / windowH : y;
 }
 
 void onMouseButton(GLFWwindow* window, int button, int action, int) {
@@ -113,62 +162,114 @@ void onCursor(GLFWwindow* window, double x, double y) {
   if (state->dragging) moveCamera(*state, -(x - state->lastX) * 0.01, (y - state->lastY) * 0.01, 1.0);
   state->lastX = x;
   state->lastY = y;
+  cursorPixel(window, x, y, *state);
+  if (state->magnifier) state->refresh = true;
 }
 
 void onScroll(GLFWwindow* window, double, double yOffset) {
   moveCamera(*static_cast<ViewerState*>(glfwGetWindowUserPointer(window)), 0.0, 0.0, std::pow(0.9, yOffset));
 }
 
-void onKey(GLFWwindow* window, int key, int, int action, int) {
-  if (action != GLFW_PRESS && action != GLFW_REPEAT) return;
-  auto* state = static_cast<ViewerState*>(glfwGetWindowUserPointer(window));
+// The camera keys, which repeat while held; false for any other key.
+bool onCameraKey(ViewerState& state, int key) {
   const double step = 5.0 * 3.14159265358979 / 180.0;
   if (key == GLFW_KEY_LEFT || key == GLFW_KEY_A) {
-    moveCamera(*state, -step, 0.0, 1.0);
+    moveCamera(state, -step, 0.0, 1.0);
   } else if (key == GLFW_KEY_RIGHT || key == GLFW_KEY_D) {
-    moveCamera(*state, step, 0.0, 1.0);
+    moveCamera(state, step, 0.0, 1.0);
   } else if (key == GLFW_KEY_UP || key == GLFW_KEY_W) {
-    moveCamera(*state, 0.0, step, 1.0);
+    moveCamera(state, 0.0, step, 1.0);
   } else if (key == GLFW_KEY_DOWN || key == GLFW_KEY_S) {
-    moveCamera(*state, 0.0, -step, 1.0);
+    moveCamera(state, 0.0, -step, 1.0);
   } else if (key == GLFW_KEY_EQUAL || key == GLFW_KEY_KP_ADD || key == GLFW_KEY_PAGE_UP) {
-    moveCamera(*state, 0.0, 0.0, 0.9);
+    moveCamera(state, 0.0, 0.0, 0.9);
   } else if (key == GLFW_KEY_MINUS || key == GLFW_KEY_KP_SUBTRACT || key == GLFW_KEY_PAGE_DOWN) {
-    moveCamera(*state, 0.0, 0.0, 1.0 / 0.9);
+    moveCamera(state, 0.0, 0.0, 1.0 / 0.9);
   } else if (key == GLFW_KEY_R) {
-    state->scene.camera = state->orbit.home;
-    state->orbit = orbitOf(state->orbit.home);
-    state->cameraMoved = true;
+    state.scene.camera = state.orbit.home;
+    state.orbit = orbitOf(state.orbit.home);
+    state.cameraMoved = true;
+  } else {
+    return false;
   }
-  if (action != GLFW_PRESS) return;  // the rest do not repeat
-  if (key == GLFW_KEY_ESCAPE || key == GLFW_KEY_Q) {
-    glfwSetWindowShouldClose(window, GLFW_TRUE);
+  return true;
+}
+
+// Material `index` on the selection (or every sphere), shown on the next frame.
+void switchMaterial(ViewerState& state, int index) {
+  applyMaterial(state.scene, state.selection, index);
+  state.cameraMoved = true;
+  state.switchedAt = Clock::now();
+}
+
+// P: the next course material the scene defines, on every plane.
+void nextPlaneMaterial(ViewerState& state) {
+  for (size_t step = 1; step <= kCourseMaterialCount; ++step) {
+    const int next = int((state.planeMaterial + step + kCourseMaterialCount) % kCourseMaterialCount);
+    const int index = materialIndex(state.scene, kCourseMaterials[next]);
+    if (index < 0) continue;
+    state.planeMaterial = next;
+    for (Plane& p : state.scene.planes) p.material = index;
+    state.cameraMoved = true;
+    state.switchedAt = Clock::now();
+    return;
+  }
+}
+
+// Tab, 1-8, M and P; false for any other key.
+bool onMaterialKey(GLFWwindow* window, ViewerState& state, int key) {
+  if (key == GLFW_KEY_TAB) {
+    int width = 0, height = 0;
+    glfwGetFramebufferSize(window, &width, &height);
+    state.selection = objectAt(state.scene, std::max(width, 1), std::max(height, 1), state.cursorX, state.cursorY);
+    say(state, state.selection.kind ? "selected " + selectionName(state.scene, state.selection) : "nothing selected");
   } else if (key >= GLFW_KEY_1 && key <= GLFW_KEY_8) {
     const char* name = kCourseMaterials[key - GLFW_KEY_1];
-    int index = materialIndex(state->scene, name);
-    if (index < 0) {
-      state->message = std::string(name) + " is not defined by this scene";
-      return;
-    }
-    for (Sphere& s : state->scene.spheres) s.material = index;
-    state->message.clear();
-    state->cameraMoved = true;
-    state->switchedAt = Clock::now();
-  } else if (key == GLFW_KEY_F12) {
-    state->screenshot = true;
+    const int index = materialIndex(state.scene, name);
+    if (index < 0) say(state, std::string(name) + " is not defined by this scene");
+    else switchMaterial(state, index);
+  } else if (key == GLFW_KEY_M) {
+    const int next = nextMaterial(state.scene, selectedMaterial(state.scene, state.selection), kCourseMaterials,
+                                  kCourseMaterialCount);
+    if (next < 0) say(state, "the scene defines no material");
+    else switchMaterial(state, next);
   } else if (key == GLFW_KEY_P) {
-    // The next course material the scene defines.
-    for (int step = 1; step <= 8; ++step) {
-      int next = (state->planeMaterial + step + 8) % 8;
-      int index = materialIndex(state->scene, kCourseMaterials[next]);
-      if (index < 0) continue;
-      state->planeMaterial = next;
-      for (Plane& p : state->scene.planes) p.material = index;
-      state->cameraMoved = true;
-      state->switchedAt = Clock::now();
-      break;
-    }
+    nextPlaneMaterial(state);
+  } else {
+    return false;
   }
+  return true;
+}
+
+// H, U, C and F12.
+void onViewKey(ViewerState& state, int key) {
+  if (key == GLFW_KEY_H) {
+    state.help = !state.help;
+    state.refresh = true;
+  } else if (key == GLFW_KEY_U) {
+    state.uvPass = !state.uvPass;
+    state.refresh = true;
+  } else if (key == GLFW_KEY_C) {
+    printf("%s", cameraBlock(state.scene.camera).c_str());
+    fflush(stdout);
+    say(state, "camera printed to the terminal");
+  } else if (key == GLFW_KEY_F12) {
+    state.screenshot = true;
+  }
+}
+
+void onKey(GLFWwindow* window, int key, int, int action, int) {
+  auto* state = static_cast<ViewerState*>(glfwGetWindowUserPointer(window));
+  if (key == GLFW_KEY_Z) {  // held: the magnifier shows until the key is released
+    state->magnifier = action != GLFW_RELEASE;
+    state->refresh = true;
+    return;
+  }
+  if (action == GLFW_RELEASE || onCameraKey(*state, key) || action != GLFW_PRESS) return;  // the rest do not repeat
+  if (key == GLFW_KEY_ESCAPE || key == GLFW_KEY_Q)
+    glfwSetWindowShouldClose(window, GLFW_TRUE);
+  else if (!onMaterialKey(window, *state, key))
+    onViewKey(*state, key);
 }
 
 // Modification times of the scene's files (an unreadable file counts as changed).
@@ -201,10 +302,13 @@ void reloadIfChanged(ViewerState& state, const std::string& path, const ReadPoli
     state.reloaded = std::move(gpuScene);
     state.orbit = orbitOf(state.scene.camera);
     state.dirty = true;
-    state.message = "reloaded";
+    state.selection = {};
+    state.sceneError = false;
+    say(state, "reloaded");
   } catch (const Error& e) {
     fprintf(stderr, "%s\n", errorLine(e).c_str());
-    state.message = "scene error, see the terminal";
+    state.sceneError = true;
+    state.message.clear();  // a "reloaded" before the error no longer holds
   }
 }
 
@@ -232,22 +336,31 @@ void saveScreenshot(ViewerState& state, Renderer& renderer, const RenderOptions&
   }
   if (!error.empty()) {
     fprintf(stderr, "raytex: %s\n", error.c_str());
-    state.message = "not saved, see the terminal";
+    say(state, "not saved, see the terminal");
     return;
   }
-  state.message = "wrote " + output;
+  say(state, "wrote " + output);
   printf("raytex: wrote %s (%ux%u, %s)\n", output.c_str(), renderer.width, renderer.height, settings);
   fflush(stdout);
 }
 
-std::string title(const ViewerState& state, uint32_t samples, uint32_t target, double frameMs, double gpuMs) {
+// The title: the first sphere's and plane's materials, the selection, the samples, the frame
+// time, then what is passing: the point under the magnifier, a message, a scene error.
+std::string title(const ViewerState& state, uint32_t samples, uint32_t target, double frameMs, double gpuMs,
+                  const std::string& readout) {
   std::string t = "raytex";
   if (!state.scene.spheres.empty()) t += " | sphere: " + materialName(state.scene, state.scene.spheres[0].material);
   if (!state.scene.planes.empty()) t += " | plane: " + materialName(state.scene, state.scene.planes[0].material);
+  if (state.selection.kind)
+    t += " | selected: " + selectionName(state.scene, state.selection) + ": " +
+         materialName(state.scene, selectedMaterial(state.scene, state.selection));
   char text[96];
   snprintf(text, sizeof(text), " | %u/%u samples | %.1f ms/frame (GPU %.1f)", samples, target, frameMs, gpuMs);
   t += text;
-  if (!state.message.empty()) t += " | " + state.message;
+  if (state.uvPass) t += " | uv pass";
+  if (!readout.empty()) t += " | " + readout;
+  if (!state.message.empty() && Clock::now() - state.messageAt < kMessageTime) t += " | " + state.message;
+  if (state.sceneError) t += " | scene error, see the terminal";
   return t;
 }
 
@@ -286,18 +399,52 @@ std::vector<KernelKey> viewerKernels(const Renderer& renderer, const GpuScene& p
   return keys;
 }
 
+// The kernel with every kind the scene's materials have, on spheres and planes alike: it renders
+// any switch of materials, the image bit for bit the specialised kernels' (specialisation_test).
+KernelKey allKindsKey(const GpuScene& packed, const Scene& scene, const RenderJob& job) {
+  KernelKey key = viewerKey(packed, scene, job);
+  uint32_t kinds = 1u << uint32_t(TextureKind::None);  // objects may keep the default material
+  for (const Material& m : scene.materials) kinds |= 1u << uint32_t(m.texture.kind);
+  key.shape.sphereKinds = key.shape.planeKinds = kinds;
+  key.shape.imageCount = uint32_t(packed.images.size());
+  return key;
+}
+
 // Makes viewerKernels' kernels current, over their tiles for the camera as packed: after every
-// pack, the only times the key or the tiles change.
-void prepareViewerKernels(Renderer& renderer, const GpuScene& packed, const Scene& scene, const RenderJob& job) {
+// pack, the only times the key or the tiles change. While one of them has not run yet (lavapipe
+// compiles at the first dispatch) and the all-kinds kernel has, that one renders instead, so
+// that no key waits for a compile; returns false then (waitForWork compiles the others).
+bool prepareViewerKernels(Renderer& renderer, const GpuScene& packed, const Scene& scene, const RenderJob& job) {
+  bool ready = true;
+  for (const KernelKey& k : viewerKernels(renderer, packed, scene, job)) ready = ready && pipelineWarm(renderer, k);
+  const KernelKey all = allKindsKey(packed, scene, job);
+  if (!ready && pipelineWarm(renderer, all)) {
+    preparePipeline(renderer, all);
+    return false;
+  }
   const KernelKey key = viewerKey(packed, scene, job);
   const std::vector<TextureKinds> sets = viewerTileSets(renderer, key);
   prepareTileKernels(renderer, key, sets.empty() ? TilePlan{} : assignTiles(sets, tileKinds(packed), packed.tiles.columns));
+  return true;
 }
 
-// A pipeline a key could need next that has not run yet: the course materials on the sphere,
-// then on the plane. False when all are ready.
+// The first of the current scene's specialised kernels not compiled yet; false when all are.
+bool pendingKernel(const Renderer& renderer, const GpuScene& packed, const Scene& scene, const RenderJob& job,
+                   KernelKey* key) {
+  for (const KernelKey& k : viewerKernels(renderer, packed, scene, job))
+    if (!pipelineWarm(renderer, k)) {
+      *key = k;
+      return true;
+    }
+  return false;
+}
+
+// A pipeline a key could need next that has not run yet: the all-kinds kernel, then the course
+// materials on the spheres, then on the planes. False when all are ready.
 bool nextPipelineToWarm(const ViewerState& state, const Renderer& renderer, const RenderJob& job,
                         const GpuScene& packed, KernelKey* key) {
+  *key = allKindsKey(packed, state.scene, job);
+  if (!pipelineWarm(renderer, *key)) return true;
   for (int onPlane = 0; onPlane < 2; ++onPlane)
     for (const char* name : kCourseMaterials) {
       int index = materialIndex(state.scene, name);
@@ -344,6 +491,7 @@ struct Viewer {
   GpuScene gpuScene;
   uint32_t target = 1;   // samples per pixel to accumulate
   uint32_t samples = 0;  // accumulated in the image on screen
+  std::vector<float> uv;  // U: the uv pass of the image on screen (AOV_UV, a vec4 a pixel)
   std::vector<std::filesystem::file_time_type> fileTimes;
   Clock::time_point lastTitle, frameStart;
 };
@@ -390,14 +538,24 @@ void openViewer(Viewer& v, const RenderOptions& options) {
   v.renderer.displayBgra = windowBgra(v.window);
 }
 
-// Handles input; waits when there is nothing to render, compiling meanwhile what a key may need
-// next so that the switch shows on the next frame.
+// Handles input; waits when there is nothing to render, compiling meanwhile the specialised
+// kernels the all-kinds one stands in for, then what a key may need next so that the switch
+// shows on the next frame. The all-kinds kernel compiles once the first frame is shown.
 void waitForWork(Viewer& v, bool keepRendering) {
-  const ViewerState& s = v.state;
+  ViewerState& s = v.state;
   const bool busy = v.samples < v.target || s.dirty || s.cameraMoved || s.refresh || s.screenshot;
   KernelKey warm;
-  if (busy || keepRendering) {
+  const KernelKey all = allKindsKey(v.gpuScene, s.scene, v.job);
+  if (!keepRendering && v.samples > 0 && !pipelineWarm(v.renderer, all)) {
+    warmPipeline(v.renderer, all);
     glfwPollEvents();
+  } else if (busy || keepRendering) {
+    glfwPollEvents();
+  } else if (s.specialisedPending && pendingKernel(v.renderer, v.gpuScene, s.scene, v.job, &warm)) {
+    warmPipeline(v.renderer, warm);
+    glfwPollEvents();
+  } else if (s.specialisedPending) {
+    s.specialisedPending = !prepareViewerKernels(v.renderer, v.gpuScene, s.scene, v.job);
   } else if (nextPipelineToWarm(s, v.renderer, v.job, v.gpuScene, &warm)) {
     warmPipeline(v.renderer, warm);
     glfwPollEvents();
@@ -416,6 +574,17 @@ void updateScene(Viewer& v, VkExtent2D size) {
   for (const Sphere& o : state.scene.spheres) unpacked = unpacked || !v.gpuScene.materialIndex.count(o.material);
   for (const Plane& o : state.scene.planes) unpacked = unpacked || !v.gpuScene.materialIndex.count(o.material);
   if (size.width != v.renderer.width || size.height != v.renderer.height || unpacked) state.dirty = true;
+  // U: the kernels write the uv pass, tracing the pixel centre once more (on lavapipe, only within its loop limit).
+  if (state.uvPass && v.renderer.device.lavapipe &&
+      (loopTraces(v.renderer.coverage) + 1) * loopIterationsPerSample(state.scene) > kMaxLoopIterations) {
+    state.uvPass = false;
+    say(state, "no uv pass: this scene would pass the lavapipe driver's loop limit");
+  }
+  const uint32_t passes = state.uvPass ? 1u << AOV_UV : 0u;
+  if (passes != v.renderer.passMask) {
+    v.renderer.passMask = passes;
+    state.dirty = true;
+  }
   if (!state.dirty && !state.cameraMoved) return;
   if (state.dirty && state.reloaded) {
     v.gpuScene = std::move(*state.reloaded);
@@ -428,9 +597,29 @@ void updateScene(Viewer& v, VkExtent2D size) {
     uploadScene(v.renderer, v.gpuScene);
   else
     updateSceneBuffers(v.renderer, v.gpuScene);
-  prepareViewerKernels(v.renderer, v.gpuScene, state.scene, v.job);
+  state.specialisedPending = !prepareViewerKernels(v.renderer, v.gpuScene, state.scene, v.job);
   state.dirty = state.cameraMoved = false;
   v.samples = 0;
+}
+
+// U: the uv pass the first sample wrote, kept for the frames that add the others.
+void keepUvPass(Viewer& v) {
+  readbackFrame(v.renderer);
+  const float* uv = passPixels(v.renderer, Pass::Uv);
+  v.uv.assign(uv, uv + size_t(v.renderer.width) * v.renderer.height * 4);
+}
+
+// The image to the window, with the overlays that are on drawn over a copy of it: the uv pass,
+// the magnifier, the help. False when the swapchain must be re-created.
+bool showImage(Viewer& v) {
+  const ViewerState& s = v.state;
+  if (!s.help && !s.magnifier && !s.uvPass) return presentPixels(v.window, v.renderer.device, v.renderer.display);
+  return presentComposed(v.window, v.renderer.device, v.renderer.display, [&](uint32_t* pixels, uint32_t w, uint32_t h) {
+    OverlayPixels image{pixels, int(w), int(h), v.renderer.displayBgra != 0};
+    if (s.uvPass && v.uv.size() == size_t(w) * h * 4) drawUvPass(image, v.uv.data());
+    if (s.magnifier) drawMagnifier(image, int(s.cursorX), int(s.cursorY));
+    if (s.help) drawTextBox(image, kHelpLines);
+  });
 }
 
 // Adds a sample while the image lacks some, writes the F12 screenshot once it has all, and
@@ -442,6 +631,7 @@ void renderAndShow(Viewer& v, const RenderOptions& options) {
   if (render) {
     renderSample(v.renderer, v.samples++);
     v.stats.gpuMs.push_back(v.renderer.lastFrameMs);
+    if (v.samples == 1 && state.uvPass) keepUvPass(v);
   }
   if (state.screenshot && v.samples == v.target) {
     // Every sample in: bit-identical to raytex render's image with these settings.
@@ -455,7 +645,7 @@ void renderAndShow(Viewer& v, const RenderOptions& options) {
   }
   state.refresh = false;
   const Clock::time_point presentStart = Clock::now();
-  if (!presentPixels(v.window, v.renderer.device, v.renderer.display)) {
+  if (!showImage(v)) {
     createSwapchain(v.window, v.renderer.device);
     v.renderer.displayBgra = windowBgra(v.window);
   }
@@ -475,7 +665,12 @@ void pollAndTitle(Viewer& v, const RenderOptions& options) {
   reloadIfChanged(v.state, options.scene, ReadPolicy{options.allowRead}, v.fileTimes,
                   {v.pack, device.maxImageDimension2D, v.renderer.device.lavapipe, loopTraces(v.renderer.coverage)});
   const double frameMs = v.stats.frameMs.empty() ? 0.0 : v.stats.frameMs.back();
-  glfwSetWindowTitle(v.window.window, title(v.state, v.samples, v.target, frameMs, v.renderer.lastFrameMs).c_str());
+  const ViewerState& s = v.state;
+  const std::string readout =
+      s.magnifier ? pointReadout(s.scene, hitAt(s.scene, int(v.renderer.width), int(v.renderer.height), s.cursorX, s.cursorY),
+                                 v.gpuScene.images)
+                  : "";
+  glfwSetWindowTitle(v.window.window, title(s, v.samples, v.target, frameMs, v.renderer.lastFrameMs, readout).c_str());
   v.lastTitle = now;
 }
 

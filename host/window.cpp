@@ -119,6 +119,7 @@ void destroyWindow(Window& w, const Device& d) {
     destroySwapchain(w, d);
     if (w.acquired) vkDestroySemaphore(d.device, w.acquired, nullptr);
     if (w.presentReady) vkDestroySemaphore(d.device, w.presentReady, nullptr);
+    destroyBuffer(d, w.composed);
   }
   if (w.surface) vkDestroySurfaceKHR(d.instance, w.surface, nullptr);
   if (w.window) glfwDestroyWindow(w.window);
@@ -129,29 +130,45 @@ bool windowBgra(const Window& w) {
   return w.format == VK_FORMAT_B8G8R8A8_SRGB || w.format == VK_FORMAT_B8G8R8A8_UNORM;
 }
 
-bool presentPixels(Window& w, const Device& d, const Image& pixels) {
+namespace {
+
+// Records the copy of `pixels` (or, when `composed`, of the buffer holding them) into the
+// swapchain image `target`, with the barriers around it.
+void recordCopyToSwapchain(VkCommandBuffer cmd, const Window& w, VkImage target, const Image& pixels,
+                           const Buffer* composed) {
+  imageBarrier(cmd, target, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 0,
+               VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT);
+  // Sizes differ only for the frame after a resize, before the swapchain follows it.
+  const VkExtent3D extent{std::min(pixels.width, w.extent.width), std::min(pixels.height, w.extent.height), 1};
+  if (composed) {
+    VkBufferImageCopy region{};
+    region.bufferRowLength = pixels.width;
+    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    region.imageExtent = extent;
+    vkCmdCopyBufferToImage(cmd, composed->buffer, target, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+  } else {
+    imageBarrier(cmd, pixels.image, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL, VK_ACCESS_SHADER_WRITE_BIT,
+                 VK_ACCESS_TRANSFER_READ_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT);
+    VkImageCopy region{};  // r32ui and the 8-bit formats are in the same 32-bit compatibility class
+    region.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    region.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    region.extent = extent;
+    vkCmdCopyImage(cmd, pixels.image, VK_IMAGE_LAYOUT_GENERAL, target, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+    imageBarrier(cmd, pixels.image, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL, VK_ACCESS_TRANSFER_READ_BIT,
+                 VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
+  }
+  imageBarrier(cmd, target, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR,
+               VK_ACCESS_TRANSFER_WRITE_BIT, 0, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT);
+}
+
+// The swapchain's next image with the copy in it, presented; false when out of date.
+bool copyAndPresent(Window& w, const Device& d, const Image& pixels, const Buffer* composed) {
   uint32_t index = 0;
   VkResult result = vkAcquireNextImageKHR(d.device, w.swapchain, UINT64_MAX, w.acquired, VK_NULL_HANDLE, &index);
   if (result == VK_ERROR_OUT_OF_DATE_KHR) return false;
   if (result != VK_SUBOPTIMAL_KHR) VK_CHECK(result);
-
-  // A plain copy of the kernel's 8-bit display image: no conversion at present time.
-  // Sizes differ only for the frame after a resize, before the swapchain follows it.
   VkCommandBuffer cmd = beginCommands(d);
-  VkImage target = w.images[index];
-  imageBarrier(cmd, target, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 0,
-               VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT);
-  imageBarrier(cmd, pixels.image, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL, VK_ACCESS_SHADER_WRITE_BIT,
-               VK_ACCESS_TRANSFER_READ_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT);
-  VkImageCopy region{};  // r32ui and the 8-bit formats are in the same 32-bit compatibility class
-  region.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-  region.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-  region.extent = {std::min(pixels.width, w.extent.width), std::min(pixels.height, w.extent.height), 1};
-  vkCmdCopyImage(cmd, pixels.image, VK_IMAGE_LAYOUT_GENERAL, target, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
-  imageBarrier(cmd, pixels.image, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL, VK_ACCESS_TRANSFER_READ_BIT,
-               VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
-  imageBarrier(cmd, target, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR,
-               VK_ACCESS_TRANSFER_WRITE_BIT, 0, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT);
+  recordCopyToSwapchain(cmd, w, w.images[index], pixels, composed);
   submitAndWait(d, cmd, w.acquired, VK_PIPELINE_STAGE_TRANSFER_BIT, w.presentReady);
 
   VkPresentInfoKHR present{VK_STRUCTURE_TYPE_PRESENT_INFO_KHR};
@@ -164,4 +181,41 @@ bool presentPixels(Window& w, const Device& d, const Image& pixels) {
   if (result == VK_ERROR_OUT_OF_DATE_KHR || result == VK_SUBOPTIMAL_KHR) return false;
   VK_CHECK(result);
   return true;
+}
+
+// The display pixels in w.composed (sized to them), the kernel's writes visible; waits.
+void readDisplayPixels(Window& w, const Device& d, const Image& pixels) {
+  const VkDeviceSize bytes = VkDeviceSize(pixels.width) * pixels.height * 4;
+  if (w.composed.size != bytes) {
+    destroyBuffer(d, w.composed);
+    w.composed = createBuffer(d, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+  }
+  VkCommandBuffer cmd = beginCommands(d);
+  imageBarrier(cmd, pixels.image, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL, VK_ACCESS_SHADER_WRITE_BIT,
+               VK_ACCESS_TRANSFER_READ_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT);
+  VkBufferImageCopy region{};
+  region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+  region.imageExtent = {pixels.width, pixels.height, 1};
+  vkCmdCopyImageToBuffer(cmd, pixels.image, VK_IMAGE_LAYOUT_GENERAL, w.composed.buffer, 1, &region);
+  VkBufferMemoryBarrier toHost{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER};
+  toHost.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+  toHost.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+  toHost.srcQueueFamilyIndex = toHost.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+  toHost.buffer = w.composed.buffer;
+  toHost.size = VK_WHOLE_SIZE;
+  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 0, nullptr, 1, &toHost, 0,
+                       nullptr);
+  imageBarrier(cmd, pixels.image, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL, VK_ACCESS_TRANSFER_READ_BIT,
+               VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
+  submitAndWait(d, cmd);
+}
+
+}  // namespace
+
+bool presentPixels(Window& w, const Device& d, const Image& pixels) { return copyAndPresent(w, d, pixels, nullptr); }
+
+bool presentComposed(Window& w, const Device& d, const Image& pixels, const ComposeFn& compose) {
+  readDisplayPixels(w, d, pixels);
+  compose(static_cast<uint32_t*>(w.composed.data), pixels.width, pixels.height);
+  return copyAndPresent(w, d, pixels, &w.composed);
 }

@@ -5,6 +5,8 @@
 #include "device.h"
 #include "resources.h"
 
+#include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -19,6 +21,7 @@ struct Window {
   std::vector<VkImage> images;
   VkSemaphore acquired = VK_NULL_HANDLE;      // the swapchain image is ready to be written
   VkSemaphore presentReady = VK_NULL_HANDLE;  // the copy is done
+  Buffer composed;  // the display pixels read back for an overlay, then copied to the swapchain
 };
 
 // Starts GLFW. Throws VulkanError when there is no display to open a window on, or GLFW finds
@@ -46,3 +49,11 @@ bool windowBgra(const Window& window);
 // presents. Returns false when the swapchain no longer matches the window (resize): call
 // createSwapchain again.
 bool presentPixels(Window& window, const Device& device, const Image& pixels);
+
+// Draws over a copy of the display pixels (width x height, the image's byte order) before they
+// reach the window.
+using ComposeFn = std::function<void(uint32_t* pixels, uint32_t width, uint32_t height)>;
+
+// presentPixels with `compose` run on the CPU over a copy of `pixels` (the image itself, which
+// the next sample adds to, stays as the kernel wrote it).
+bool presentComposed(Window& window, const Device& device, const Image& pixels, const ComposeFn& compose);

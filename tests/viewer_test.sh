@@ -80,11 +80,15 @@ waitTitle() {  # waitTitle PATTERN: the title matches within 30 s (a loaded mach
   return 1
 }
 # stopViewer: Escape, then the viewer's exit status within 30 s (killed and 124 after that).
+# xdotool presses a key of the focused window through the server (XTEST) but sends its release
+# to the window, which may be gone by then: the server then holds Escape down, and its
+# autorepeat closes the next viewer as it opens. So Escape is released through the server too.
 stopViewer() {
   if viewerGone; then
     rc=1
   else
     xdotool key --window "$wid" Escape 2>/dev/null
+    xdotool keyup Escape 2>/dev/null
     for _ in $(seq 300); do kill -0 "$viewer" 2>/dev/null || break; sleep 0.1; done
     local killed=0
     kill -0 "$viewer" 2>/dev/null && { kill -9 "$viewer"; killed=1; }
@@ -212,6 +216,77 @@ sed -e 's|^    aSolidChecker;|    // aSolidChecker;|' -e 's|^    // aMarble;|   
 check coverage-screenshot-equals-render cmp -s "$tmp/coverage-shot.png" "$tmp/coverage-render.png"
 check coverage-window-shows-render "$xwdDiff" "$tmp/coverage.xwd" "$tmp/coverage-render.png" 1
 
+# The keys that teach, on the course scene at 160x120 (the sphere at pixel (80, 50), the floor at
+# (80, 110), the background at (80, 2)). C prints the orbited camera: pasted into the scene it
+# renders F12's image. Messages leave the title after 3 s. H, Z and U draw over the window only
+# (F12's file is the render's, and the window shows the render again once they are off). Tab
+# selects what the cursor is on; 1-8 and M change it; nothing selected, they change the spheres.
+# windowShows PNG: the window holds PNG's pixels (within 1); windowDiffers PNG: it does not.
+windowShows() { xwd -id "$wid" -silent >"$tmp/now.xwd" && "$xwdDiff" "$tmp/now.xwd" "$1" 1 >/dev/null; }
+windowDiffers() { xwd -id "$wid" -silent >"$tmp/now.xwd" && ! "$xwdDiff" "$tmp/now.xwd" "$1" 1 >/dev/null; }
+"$raytex" render "$src/scenes/textures.cfg" -o "$tmp/render-160.png" --width 160 --height 120 --spp 64
+"$raytex" view "$src/scenes/textures.cfg" -o "$tmp/keys-shot.png" --width 160 --height 120 --validate \
+  >"$tmp/keys.log" 2>&1 &
+viewer=$!
+waitWindow "$tmp/keys.log" keys-window-opens
+check keys-converged waitTitle '| 64/64 samples'
+xdotool key --window "$wid" d d w
+check keys-orbit-converged waitTitle '| 64/64 samples'
+xdotool key --window "$wid" c
+check keys-c-message waitTitle 'camera printed to the terminal'
+check keys-message-clears bash -c "for _ in \$(seq 100); do xdotool getwindowname $wid | grep -q 'camera printed' || exit 0; sleep 0.1; done; exit 1"
+xdotool key --window "$wid" h
+check keys-help-shot-waits waitTitle '| 64/64 samples'
+xdotool key --window "$wid" F12
+check keys-screenshot waitTitle "wrote $tmp/keys-shot.png"
+check keys-help-on-screen windowDiffers "$tmp/keys-shot.png"
+xdotool key --window "$wid" h
+sleep 0.5
+check keys-help-off windowShows "$tmp/keys-shot.png"
+sed -n '/^camera {$/,/^}$/p' "$tmp/keys.log" >"$tmp/printed-camera.txt"
+check keys-camera-block test "$(wc -l <"$tmp/printed-camera.txt")" -eq 6
+# The scene with its camera block (to its closing brace) replaced by the printed one.
+awk -v block="$tmp/printed-camera.txt" '/^camera / { skip = 1; while ((getline line < block) > 0) print line }
+  skip { if ($0 ~ /^}/) skip = 0; next } { print }' \
+  "$src/scenes/textures.cfg" >"$tmp/headless/scenes/printed-camera.cfg"
+"$raytex" render "$tmp/headless/scenes/printed-camera.cfg" -o "$tmp/printed-camera.png" --width 160 --height 120 --spp 64
+check keys-pasted-camera-renders-f12 cmp -s "$tmp/keys-shot.png" "$tmp/printed-camera.png"
+xdotool key --window "$wid" r
+check keys-reset-converged waitTitle '| 64/64 samples'
+xdotool mousemove --window "$wid" 80 50
+xdotool keydown --window "$wid" z
+check keys-z-readout waitTitle '| sphere 1 uv (0\.[0-9]*, 0\.[0-9]*) solid ('
+check keys-z-on-screen windowDiffers "$tmp/render-160.png"
+xdotool keyup --window "$wid" z
+check keys-z-off bash -c "for _ in \$(seq 50); do xdotool getwindowname $wid | grep -q 'uv (' || exit 0; sleep 0.1; done; exit 1"
+xdotool key --window "$wid" Tab
+check keys-tab-sphere waitTitle '| selected: sphere 1 (textures.cfg:29): aSolidChecker |'
+xdotool key --window "$wid" 5
+check keys-5-on-selection waitTitle 'sphere: anImage .* selected: sphere 1 (textures.cfg:29): anImage'
+xdotool keydown --window "$wid" z
+check keys-z-texel waitTitle 'sphere 1 uv (.*) texel ([0-9]*, [0-9]*) of earth\.jpg'
+xdotool keyup --window "$wid" z
+xdotool mousemove --window "$wid" 80 110
+xdotool key --window "$wid" Tab
+check keys-tab-plane waitTitle '| selected: plane 1 (textures.cfg:4[0-9]): aChecker |'
+xdotool key --window "$wid" 3
+check keys-3-on-plane waitTitle 'sphere: anImage | plane: aMarble'
+xdotool key --window "$wid" m
+check keys-m-next waitTitle 'plane: aWood .* selected: plane 1 (textures.cfg:4[0-9]): aWood'
+xdotool mousemove --window "$wid" 80 2
+xdotool key --window "$wid" Tab
+check keys-tab-nothing waitTitle 'nothing selected'
+xdotool key --window "$wid" m
+check keys-m-every-sphere waitTitle 'sphere: aTurbulence | plane: aWood'
+xdotool key --window "$wid" u
+check keys-u-title waitTitle '| uv pass'
+check keys-u-converged waitTitle '| 64/64 samples'
+check keys-u-on-screen windowDiffers "$tmp/render-160.png"
+xdotool key --window "$wid" u
+stopViewer
+check keys-clean-exit test "$rc" -eq 0 || tail -5 "$tmp/keys.log"
+check keys-no-validation-errors test "$(grep -c 'validation error' "$tmp/keys.log")" -eq 0
+
 # The tutorial's last step (docs/tutorial.md, step 8): its scene as mine/first.cfg beside textures/;
 # converged, F12 writes the image raytex render --spp 64 writes; changing marble to wood and
 # saving reloads the window.
@@ -229,6 +304,11 @@ xdotool key --window "$wid" F12
 check tutorial-screenshot waitTitle "wrote $tmp/tutorial/mine/shot.png"
 "$raytex" render "$tmp/tutorial/mine/first.cfg" -o "$tmp/tutorial/render.png" --width 160 --height 120 --spp 64
 check tutorial-screenshot-equals-render cmp -s "$tmp/tutorial/mine/shot.png" "$tmp/tutorial/render.png"
+xdotool mousemove --window "$wid" 80 65
+xdotool key --window "$wid" Tab
+check tutorial-tab-sphere waitTitle '| selected: sphere 1 (first.cfg:[0-9]*): stone |'
+xdotool key --window "$wid" m
+check tutorial-m-own-materials waitTitle 'sphere: floor .* selected: sphere 1 (first.cfg:[0-9]*): floor |'
 sed -i 's|texture = marble { }|texture = wood { }|' "$tmp/tutorial/mine/first.cfg"
 check tutorial-reload waitTitle 'sphere: stone .*reloaded'
 stopViewer

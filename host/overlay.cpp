@@ -1,0 +1,113 @@
+#include "overlay.h"
+
+#include <stb_easy_font.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace {
+
+constexpr int kTextScale = 2;
+
+// The pixel darkened to a quarter, so text over it reads.
+uint32_t darkened(uint32_t pixel) { return (pixel >> 2 & 0x003F3F3Fu) | (pixel & 0xFF000000u); }
+
+void fillRect(OverlayPixels& image, int x0, int y0, int x1, int y1, uint32_t colour) {
+  x0 = std::max(x0, 0), y0 = std::max(y0, 0);
+  x1 = std::min(x1, image.width), y1 = std::min(y1, image.height);
+  for (int y = y0; y < y1; ++y)
+    for (int x = x0; x < x1; ++x) image.pixels[size_t(y) * size_t(image.width) + size_t(x)] = colour;
+}
+
+void darkenRect(OverlayPixels& image, int x0, int y0, int x1, int y1) {
+  for (int y = std::max(y0, 0); y < std::min(y1, image.height); ++y)
+    for (int x = std::max(x0, 0); x < std::min(x1, image.width); ++x) {
+      uint32_t& p = image.pixels[size_t(y) * size_t(image.width) + size_t(x)];
+      p = darkened(p);
+    }
+}
+
+// stb_easy_font's quads for `text` at (x, y), scaled `scale` times.
+void drawText(OverlayPixels& image, int x, int y, const std::string& text, uint32_t colour, int scale) {
+  struct Vertex {
+    float x, y, z;
+    uint8_t colour[4];
+  };
+  std::vector<Vertex> vertices(text.size() * 300 / sizeof(Vertex) + 64);
+  std::string copy = text;
+  const int quads = stb_easy_font_print(0.0f, 0.0f, copy.data(), nullptr, vertices.data(),
+                                        int(vertices.size() * sizeof(Vertex)));
+  for (int q = 0; q < quads; ++q) {
+    const Vertex& a = vertices[size_t(q) * 4];
+    const Vertex& c = vertices[size_t(q) * 4 + 2];
+    fillRect(image, x + int(a.x) * scale, y + int(a.y) * scale, x + int(c.x) * scale, y + int(c.y) * scale, colour);
+  }
+}
+
+void frame(OverlayPixels& image, int x0, int y0, int x1, int y1, uint32_t colour) {
+  fillRect(image, x0, y0, x1, y0 + 1, colour);
+  fillRect(image, x0, y1 - 1, x1, y1, colour);
+  fillRect(image, x0, y0, x0 + 1, y1, colour);
+  fillRect(image, x1 - 1, y0, x1, y1, colour);
+}
+
+}  // namespace
+
+uint32_t overlayPixel(const OverlayPixels& image, uint8_t r, uint8_t g, uint8_t b) {
+  const uint32_t first = image.bgra ? b : r, third = image.bgra ? r : b;
+  return first | uint32_t(g) << 8 | third << 16 | 0xFF000000u;
+}
+
+void drawTextBox(OverlayPixels& image, const std::vector<std::string>& lines) {
+  int keyWidth = 0, textWidth = 0;  // in stb_easy_font's pixels
+  for (const std::string& line : lines) {
+    const size_t tab = line.find('\t');
+    std::string key = line.substr(0, tab), text = tab == std::string::npos ? "" : line.substr(tab + 1);
+    keyWidth = std::max(keyWidth, stb_easy_font_width(key.data()));
+    textWidth = std::max(textWidth, stb_easy_font_width(text.data()));
+  }
+  const int margin = 8, gap = 12, columns = keyWidth + gap + textWidth;
+  const int scale = columns * kTextScale + 2 * margin <= image.width ? kTextScale : 1;
+  const int lineHeight = 12 * scale;
+  darkenRect(image, 0, 0, columns * scale + 2 * margin, int(lines.size()) * lineHeight + 2 * margin);
+  const uint32_t white = overlayPixel(image, 255, 255, 255);
+  for (size_t i = 0; i < lines.size(); ++i) {
+    const size_t tab = lines[i].find('\t');
+    const int y = margin + int(i) * lineHeight;
+    drawText(image, margin, y, lines[i].substr(0, tab), white, scale);
+    if (tab != std::string::npos) drawText(image, margin + (keyWidth + gap) * scale, y, lines[i].substr(tab + 1), white, scale);
+  }
+}
+
+void drawMagnifier(OverlayPixels& image, int x, int y) {
+  const int half = kMagnifierSource / 2, side = kMagnifierSource * kMagnifierZoom;
+  std::vector<uint32_t> source(size_t(kMagnifierSource) * kMagnifierSource);
+  for (int j = 0; j < kMagnifierSource; ++j)
+    for (int i = 0; i < kMagnifierSource; ++i) {
+      const int sx = std::clamp(x - half + i, 0, image.width - 1), sy = std::clamp(y - half + j, 0, image.height - 1);
+      source[size_t(j) * kMagnifierSource + size_t(i)] = image.pixels[size_t(sy) * size_t(image.width) + size_t(sx)];
+    }
+  // Beside the cursor, to its lower right, or wherever the window leaves room.
+  int left = x + 16, top = y + 16;
+  if (left + side > image.width) left = x - 16 - side;
+  if (top + side > image.height) top = y - 16 - side;
+  left = std::clamp(left, 0, std::max(image.width - side, 0));
+  top = std::clamp(top, 0, std::max(image.height - side, 0));
+  for (int j = 0; j < kMagnifierSource; ++j)
+    for (int i = 0; i < kMagnifierSource; ++i)
+      fillRect(image, left + i * kMagnifierZoom, top + j * kMagnifierZoom, left + (i + 1) * kMagnifierZoom,
+               top + (j + 1) * kMagnifierZoom, source[size_t(j) * kMagnifierSource + size_t(i)]);
+  const uint32_t white = overlayPixel(image, 255, 255, 255), black = overlayPixel(image, 0, 0, 0);
+  frame(image, left - 1, top - 1, left + side + 1, top + side + 1, black);
+  frame(image, left - 2, top - 2, left + side + 2, top + side + 2, white);
+  const int c = half * kMagnifierZoom;
+  frame(image, left + c - 1, top + c - 1, left + c + kMagnifierZoom + 1, top + c + kMagnifierZoom + 1, white);
+}
+
+void drawUvPass(OverlayPixels& image, const float* uv) {
+  auto byte = [](float v) { return uint8_t(std::lround(std::clamp(std::isfinite(v) ? v : 0.0f, 0.0f, 1.0f) * 255.0f)); };
+  for (size_t i = 0; i < size_t(image.width) * size_t(image.height); ++i) {
+    const float* p = uv + 4 * i;
+    image.pixels[i] = overlayPixel(image, byte(p[0]), byte(p[1]), byte(p[2]));
+  }
+}
