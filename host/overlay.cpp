@@ -111,3 +111,13 @@ void drawUvPass(OverlayPixels& image, const float* uv) {
     image.pixels[i] = overlayPixel(image, byte(p[0]), byte(p[1]), byte(p[2]));
   }
 }
+
+void drawSplit(OverlayPixels& image, const uint32_t* right, int splitX) {
+  const int from = std::clamp(splitX, 0, image.width);
+  for (int y = 0; y < image.height; ++y)
+    for (int x = from; x < image.width; ++x) {
+      const size_t i = size_t(y) * size_t(image.width) + size_t(x);
+      image.pixels[i] = right[i];
+    }
+  if (splitX > 0 && splitX < image.width) fillRect(image, splitX, 0, splitX + 1, image.height, overlayPixel(image, 255, 255, 255));
+}

@@ -30,3 +30,7 @@ void drawMagnifier(OverlayPixels& image, int x, int y);
 // The uv pass as colours: red u, green v, blue the third coordinate of solid kinds, each
 // clamped to [0, 1]; the background black. `uv` holds a vec4 per pixel (AOV_UV; w the coverage).
 void drawUvPass(OverlayPixels& image, const float* uv);
+
+// The split screen: `right` (the image's size, the same byte order) from column splitX on, and a
+// white line at splitX when it lies inside the image.
+void drawSplit(OverlayPixels& image, const uint32_t* right, int splitX);

@@ -173,7 +173,8 @@ uint32_t outputRows(const Renderer& r, uint32_t width, uint32_t height) {
   const VkDeviceSize output = VkDeviceSize(width) * std::max(rows, 1u) * 16;
   const VkDeviceSize passes = passBytes(r, width, std::max(rows, 1u));
   const VkDeviceSize buffer = std::max(output, passes);
-  const VkDeviceSize total = (r.accumulate ? 2 * output + VkDeviceSize(width) * height * 4 : output) +
+  const VkDeviceSize accumulation = (output + VkDeviceSize(width) * height * 4) * (r.secondAccumulation ? 2 : 1);
+  const VkDeviceSize total = (r.accumulate ? output + accumulation : output) +
                              (passPlanes(r) ? passes : 0) + edgeListBytes(r, width, std::max(rows, 1u));
   const std::string size = std::to_string(width) + "x" + std::to_string(height);
   const VkDeviceSize range = r.device.properties.limits.maxStorageBufferRange;
@@ -193,15 +194,30 @@ uint32_t outputRows(const Renderer& r, uint32_t width, uint32_t height) {
   return rows;
 }
 
+// Running sums and display pixels (progressive only; else 1 x 1, the binding exists), in GENERAL
+// layout.
+void createAccumulation(Renderer& r, uint32_t width, uint32_t height, Buffer& sums, Image& display) {
+  destroyBuffer(r.device, sums);
+  destroyImage(r.device, display);
+  sums = createBuffer(r.device, accumulationBytes(r, width, height), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+  display = createImage(r.device, r.accumulate ? width : 1, r.accumulate ? height : 1, 1, VK_FORMAT_R32_UINT,
+                        VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, false);
+  VkCommandBuffer cmd = beginCommands(r.device);
+  imageBarrier(cmd, display.image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL, 0, VK_ACCESS_SHADER_WRITE_BIT,
+               VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
+  submitAndWait(r.device, cmd);
+}
+
 void createOutput(Renderer& r, uint32_t width, uint32_t height) {
   const uint32_t rows = outputRows(r, width, height);
   destroyBuffer(r.device, r.pixels);
-  destroyBuffer(r.device, r.accumulation);
-  destroyImage(r.device, r.display);
-  r.accumulation = createBuffer(r.device, accumulationBytes(r, width, height), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-  // Display pixels (progressive only; else 1 x 1, the binding exists).
-  r.display = createImage(r.device, r.accumulate ? width : 1, r.accumulate ? height : 1, 1, VK_FORMAT_R32_UINT,
-                          VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, false);
+  createAccumulation(r, width, height, r.accumulation, r.display);
+  if (r.secondAccumulation) {
+    createAccumulation(r, width, height, r.otherAccumulation, r.otherDisplay);
+  } else {
+    destroyBuffer(r.device, r.otherAccumulation);
+    destroyImage(r.device, r.otherDisplay);
+  }
   // A storage buffer in host-visible memory, not an image: the host reads it in place, and
   // lavapipe stores one vec4 per lane instead of one image channel per lane (docs/performance.md,
   // "Where the kernel's time goes").
@@ -213,10 +229,6 @@ void createOutput(Renderer& r, uint32_t width, uint32_t height) {
   r.edgeList = createBuffer(r.device, edgeListBytes(r, width, r.bandRows),
                             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT |
                                 VK_BUFFER_USAGE_TRANSFER_DST_BIT);
-  VkCommandBuffer cmd = beginCommands(r.device);
-  imageBarrier(cmd, r.display.image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL, 0, VK_ACCESS_SHADER_WRITE_BIT,
-               VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
-  submitAndWait(r.device, cmd);
   r.width = width;
   r.height = height;
 }
@@ -326,9 +338,10 @@ void destroyRenderer(Renderer& r) {
     for (CachedPipeline& p : r.pipelines) vkDestroyPipeline(d, p.pipeline, nullptr);
     for (Buffer* b : {&r.frame, &r.spheres, &r.planes, &r.materials, &r.lights, &r.noise, &r.pixels,
                       &r.accumulation, &r.tree, &r.treeStorage, &r.sphereStorage, &r.status, &r.tileRanges,
-                      &r.tileSpheres, &r.tileOrder, &r.passes, &r.edgeList})
+                      &r.tileSpheres, &r.tileOrder, &r.passes, &r.edgeList, &r.otherAccumulation})
       destroyBuffer(r.device, *b);
     destroyImage(r.device, r.display);
+    destroyImage(r.device, r.otherDisplay);
     destroyImages(r);
     destroyImage(r.device, r.placeholder);
     if (r.sampler) vkDestroySampler(d, r.sampler, nullptr);
@@ -364,7 +377,8 @@ void uploadScene(Renderer& r, const GpuScene& s) {
     uploadImageLayers(r.device, r.images.back(), chain.pixels.data(), chain.pixels.size());
   }
 
-  bool accumulationFits = r.accumulation.size == accumulationBytes(r, r.width, r.height);
+  bool accumulationFits = r.accumulation.size == accumulationBytes(r, r.width, r.height) &&
+                          (r.otherAccumulation.size == accumulationBytes(r, r.width, r.height)) == r.secondAccumulation;
   bool passesFit = r.passes.size == passBytes(r, r.width, r.bandRows);
   bool edgesFit = r.edgeList.size == edgeListBytes(r, r.width, r.bandRows);
   if (s.frame.width != r.width || s.frame.height != r.height || !r.pixels.buffer || !accumulationFits || !passesFit ||
@@ -616,4 +630,10 @@ const float* passPixels(const Renderer& r, Pass pass) {
   if (!(r.passMask >> bit & 1u)) return nullptr;
   const uint32_t plane = uint32_t(std::bitset<AOV_COUNT>(r.passMask & ((1u << bit) - 1u)).count());
   return static_cast<const float*>(r.passes.data) + size_t(plane) * r.width * bandHeight(r) * 4;
+}
+
+void swapAccumulation(Renderer& r) {
+  std::swap(r.accumulation, r.otherAccumulation);
+  std::swap(r.display, r.otherDisplay);
+  writeDescriptors(r);
 }

@@ -76,6 +76,11 @@ struct Renderer {
   Image display;        // r32ui: progressive means as 8-bit sRGB pixels (1 x 1 unless `accumulate`)
   bool accumulate = false;  // set before uploadScene to render progressively (the viewer; headless
                             // renders over lavapipe's loop limit, headless.cpp)
+  // The viewer's split screen, set before uploadScene with `accumulate`: a second set of running
+  // sums and display pixels, which swapAccumulation exchanges with the one the kernels write.
+  bool secondAccumulation = false;
+  Buffer otherAccumulation;
+  Image otherDisplay;
   uint32_t displayBgra = 0;  // 1: `display` in B, G, R, A byte order (Frame.displayBgra)
   float sampleWeight = 1.0f;  // of the last renderSample: readbackFrame's mean = sum * weight
   // BINDING_IMAGES' elements: each scene image at its own size; `placeholder` (1 x 1) in the rest.
@@ -134,6 +139,10 @@ void renderFrame(Renderer& renderer);
 // and writes their mean as 8-bit sRGB to `display`; readbackFrame gives the mean in float.
 // After N * N of them it is bit-identical to renderFrame's image with the N x N pipeline.
 void renderSample(Renderer& renderer, uint32_t index);
+
+// Makes the second accumulation set (secondAccumulation) the one the kernels add samples to and
+// write display pixels from, and the current one the other: two methods accumulate side by side.
+void swapAccumulation(Renderer& renderer);
 
 // The pixels the last renderFrame's edge pass shaded again (FILTER_COVERAGE), else 0.
 uint32_t edgePixelCount(const Renderer& renderer);

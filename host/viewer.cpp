@@ -46,6 +46,9 @@ const std::vector<std::string> kHelpLines = {
     "C\tprint the camera as a camera { } block",
     "Z (hold)\tmagnifier; uv and texel in the title",
     "U\tuv pass (red u, green v)",
+    "V\tsplit screen: the render's method | another",
+    "B\tthe split's other method: point, box, coverage",
+    "[ ], right drag\tmove the split",
     "F12\twrite the image (every sample in)",
     "H\tthis help",
     "Esc, Q\tquit",
@@ -94,6 +97,11 @@ struct ViewerState {
   bool help = false;         // H: the keys over the image
   bool magnifier = false;    // Z held: the pixels around the cursor enlarged
   bool uvPass = false;       // U: the uv pass instead of the image
+  TextureFilter filter = TextureFilter::Point;       // the render's method (the job's), left of the split
+  bool split = false;                                // V: another method right of the split
+  TextureFilter splitFilter = TextureFilter::Box;    // B: that method
+  double splitAt = 0.5;                              // the split's column, a fraction of the width
+  bool splitDragging = false;                        // the right mouse button moves the split
   bool sceneError = false;   // the scene's files on disk do not load; the last good scene shows
   bool specialisedPending = false;  // the all-kinds kernel renders until the specialised ones are compiled
   std::string message;       // shown in the title for kMessageTime (e.g. "wrote shot.png")
@@ -150,8 +158,21 @@ void cursorPixel(GLFWwindow* window, double x, double y, ViewerState& state) {
   state.cursorY = windowH > 0 ? y * pixelsH / windowH : y;
 }
 
+// V's split at the cursor's column.
+void moveSplit(GLFWwindow* window, ViewerState& state) {
+  int width = 0, height = 0;
+  glfwGetFramebufferSize(window, &width, &height);
+  state.splitAt = std::clamp(state.cursorX / std::max(width, 1), 0.0, 1.0);
+  state.refresh = true;
+}
+
 void onMouseButton(GLFWwindow* window, int button, int action, int) {
   auto* state = static_cast<ViewerState*>(glfwGetWindowUserPointer(window));
+  if (button == GLFW_MOUSE_BUTTON_RIGHT) {
+    state->splitDragging = action == GLFW_PRESS && state->split;
+    if (state->splitDragging) moveSplit(window, *state);
+    return;
+  }
   if (button != GLFW_MOUSE_BUTTON_LEFT) return;
   state->dragging = action == GLFW_PRESS;
   glfwGetCursorPos(window, &state->lastX, &state->lastY);
@@ -164,6 +185,7 @@ void onCursor(GLFWwindow* window, double x, double y) {
   state->lastY = y;
   cursorPixel(window, x, y, *state);
   if (state->magnifier) state->refresh = true;
+  if (state->splitDragging) moveSplit(window, *state);
 }
 
 void onScroll(GLFWwindow* window, double, double yOffset) {
@@ -241,6 +263,30 @@ bool onMaterialKey(GLFWwindow* window, ViewerState& state, int key) {
   return true;
 }
 
+// The method after `filter` that is not `except`: point, box, coverage, cycling.
+TextureFilter nextFilter(TextureFilter filter, TextureFilter except) {
+  do filter = TextureFilter((int(filter) + 1) % 3);
+  while (filter == except);
+  return filter;
+}
+
+// V, B, [ and ]: the split screen.
+bool onSplitKey(ViewerState& state, int key) {
+  if (key == GLFW_KEY_V) {
+    state.split = !state.split;
+  } else if (key == GLFW_KEY_B && state.split) {
+    state.splitFilter = nextFilter(state.splitFilter, state.filter);
+  } else if ((key == GLFW_KEY_LEFT_BRACKET || key == GLFW_KEY_RIGHT_BRACKET) && state.split) {
+    state.splitAt = std::clamp(state.splitAt + (key == GLFW_KEY_LEFT_BRACKET ? -1.0 : 1.0) / 32.0, 0.0, 1.0);
+    state.refresh = true;
+    return true;
+  } else {
+    return false;
+  }
+  state.cameraMoved = true;  // both methods start again
+  return true;
+}
+
 // H, U, C and F12.
 void onViewKey(ViewerState& state, int key) {
   if (key == GLFW_KEY_H) {
@@ -268,7 +314,7 @@ void onKey(GLFWwindow* window, int key, int, int action, int) {
   if (action == GLFW_RELEASE || onCameraKey(*state, key) || action != GLFW_PRESS) return;  // the rest do not repeat
   if (key == GLFW_KEY_ESCAPE || key == GLFW_KEY_Q)
     glfwSetWindowShouldClose(window, GLFW_TRUE);
-  else if (!onMaterialKey(window, *state, key))
+  else if (!onMaterialKey(window, *state, key) && !onSplitKey(*state, key))
     onViewKey(*state, key);
 }
 
@@ -358,6 +404,8 @@ std::string title(const ViewerState& state, uint32_t samples, uint32_t target, d
   snprintf(text, sizeof(text), " | %u/%u samples | %.1f ms/frame (GPU %.1f)", samples, target, frameMs, gpuMs);
   t += text;
   if (state.uvPass) t += " | uv pass";
+  if (state.split)
+    t += std::string(" | split: ") + textureFilterName(state.filter) + " | " + textureFilterName(state.splitFilter);
   if (!readout.empty()) t += " | " + readout;
   if (!state.message.empty() && Clock::now() - state.messageAt < kMessageTime) t += " | " + state.message;
   if (state.sceneError) t += " | scene error, see the terminal";
@@ -492,6 +540,7 @@ struct Viewer {
   uint32_t target = 1;   // samples per pixel to accumulate
   uint32_t samples = 0;  // accumulated in the image on screen
   std::vector<float> uv;  // U: the uv pass of the image on screen (AOV_UV, a vec4 a pixel)
+  Buffer splitPixels;     // V: the other method's display pixels, read back to draw beside the job's
   std::vector<std::filesystem::file_time_type> fileTimes;
   Clock::time_point lastTitle, frameStart;
 };
@@ -507,6 +556,8 @@ void loadScene(Viewer& v, const RenderOptions& options) {
   v.pack.mipmaps = v.job.filter != TextureFilter::Point;  // mip chains only for the filtered kernel
   v.pack.allMaterials = true;
   v.pack.maxImageMiB = options.maxImageMiB;
+  state.filter = v.job.filter;
+  state.splitFilter = nextFilter(v.job.filter, v.job.filter);
   state.orbit = orbitOf(state.scene.camera);
   for (size_t i = 0; i < 8 && !state.scene.planes.empty(); ++i)
     if (materialIndex(state.scene, kCourseMaterials[i]) == state.scene.planes[0].material) state.planeMaterial = int(i);
@@ -566,32 +617,55 @@ void waitForWork(Viewer& v, bool keepRendering) {
 
 // Re-packs and uploads what changed: everything for a new size, scene file or unpacked
 // material; camera-relative positions and material indices for a camera move or a key.
-void updateScene(Viewer& v, VkExtent2D size) {
+// What the renderer and the packing need for U and V: the uv pass, the coverage filter's edge
+// list, a second accumulation set and mip chains. Changes mark the scene dirty; returns whether
+// the scene must be packed again (its images with or without mip chains).
+bool configureMethods(Viewer& v) {
   ViewerState& state = v.state;
-  // Images are decoded only with the scene (start, reload) or when an object's material is not
-  // packed (over MAX_MATERIALS); a new size re-packs the camera alone.
-  bool unpacked = false;
-  for (const Sphere& o : state.scene.spheres) unpacked = unpacked || !v.gpuScene.materialIndex.count(o.material);
-  for (const Plane& o : state.scene.planes) unpacked = unpacked || !v.gpuScene.materialIndex.count(o.material);
-  if (size.width != v.renderer.width || size.height != v.renderer.height || unpacked) state.dirty = true;
-  // U: the kernels write the uv pass, tracing the pixel centre once more (on lavapipe, only within its loop limit).
-  if (state.uvPass && v.renderer.device.lavapipe &&
-      (loopTraces(v.renderer.coverage) + 1) * loopIterationsPerSample(state.scene) > kMaxLoopIterations) {
+  Renderer& r = v.renderer;
+  auto uses = [&](TextureFilter f) { return state.filter == f || (state.split && state.splitFilter == f); };
+  // On lavapipe, the uv pass (the pixel centre traced once more) and the coverage filter's edge
+  // pass only within its loop limit.
+  const uint64_t perSample = r.device.lavapipe ? loopIterationsPerSample(state.scene) : 0;
+  if (uses(TextureFilter::Coverage) && !r.coverage && loopTraces(true) * perSample > kMaxLoopIterations) {
+    state.split = false;
+    say(state, "no split with coverage: this scene would pass the lavapipe driver's loop limit");
+  }
+  if (state.uvPass && (loopTraces(r.coverage) + 1) * perSample > kMaxLoopIterations) {
     state.uvPass = false;
     say(state, "no uv pass: this scene would pass the lavapipe driver's loop limit");
   }
   const uint32_t passes = state.uvPass ? 1u << AOV_UV : 0u;
-  if (passes != v.renderer.passMask) {
-    v.renderer.passMask = passes;
-    state.dirty = true;
-  }
+  const bool edges = uses(TextureFilter::Coverage);
+  const bool mipmaps = uses(TextureFilter::Box) || edges;
+  const bool changed = passes != r.passMask || edges != r.coverage || state.split != r.secondAccumulation;
+  r.passMask = passes;
+  r.coverage = edges;
+  r.secondAccumulation = state.split;
+  const bool repack = mipmaps != v.pack.mipmaps;
+  v.pack.mipmaps = mipmaps;
+  if (changed || repack) state.dirty = true;
+  return repack;
+}
+
+// Re-packs and uploads what changed: everything for a new size, scene file, unpacked material
+// or method (U, V); camera-relative positions and material indices for a camera move or a key.
+void updateScene(Viewer& v, VkExtent2D size) {
+  ViewerState& state = v.state;
+  // Images are decoded only with the scene (start, reload), when an object's material is not
+  // packed (over MAX_MATERIALS), or when mip chains come or go; a new size re-packs the camera.
+  bool unpacked = false;
+  for (const Sphere& o : state.scene.spheres) unpacked = unpacked || !v.gpuScene.materialIndex.count(o.material);
+  for (const Plane& o : state.scene.planes) unpacked = unpacked || !v.gpuScene.materialIndex.count(o.material);
+  if (size.width != v.renderer.width || size.height != v.renderer.height || unpacked) state.dirty = true;
+  const bool repack = configureMethods(v);
   if (!state.dirty && !state.cameraMoved) return;
-  if (state.dirty && state.reloaded) {
+  if (state.dirty && state.reloaded && !repack) {
     v.gpuScene = std::move(*state.reloaded);
-    state.reloaded.reset();
-  } else if (state.dirty && unpacked) {
+  } else if (state.dirty && (unpacked || repack || state.reloaded)) {
     v.gpuScene = buildGpuScene(state.scene, size.width, size.height, v.pack);
   }
+  state.reloaded.reset();
   packCamera(v.gpuScene, state.scene, size.width, size.height);
   if (state.dirty)
     uploadScene(v.renderer, v.gpuScene);
@@ -609,13 +683,28 @@ void keepUvPass(Viewer& v) {
   v.uv.assign(uv, uv + size_t(v.renderer.width) * v.renderer.height * 4);
 }
 
+// V: the sample of the split's other method into the second accumulation set, then the job's
+// own into the first, which F12 reads.
+void renderSplitSample(Viewer& v) {
+  RenderJob other = v.job;
+  other.filter = v.state.splitFilter;
+  preparePipeline(v.renderer, viewerKey(v.gpuScene, v.state.scene, other));
+  swapAccumulation(v.renderer);
+  renderSample(v.renderer, v.samples);
+  swapAccumulation(v.renderer);
+  preparePipeline(v.renderer, viewerKey(v.gpuScene, v.state.scene, v.job));
+  renderSample(v.renderer, v.samples);
+}
+
 // The image to the window, with the overlays that are on drawn over a copy of it: the uv pass,
 // the magnifier, the help. False when the swapchain must be re-created.
 bool showImage(Viewer& v) {
   const ViewerState& s = v.state;
-  if (!s.help && !s.magnifier && !s.uvPass) return presentPixels(v.window, v.renderer.device, v.renderer.display);
+  if (!s.help && !s.magnifier && !s.uvPass && !s.split) return presentPixels(v.window, v.renderer.device, v.renderer.display);
+  if (s.split) readImagePixels(v.renderer.device, v.renderer.otherDisplay, v.splitPixels);
   return presentComposed(v.window, v.renderer.device, v.renderer.display, [&](uint32_t* pixels, uint32_t w, uint32_t h) {
     OverlayPixels image{pixels, int(w), int(h), v.renderer.displayBgra != 0};
+    if (s.split) drawSplit(image, static_cast<const uint32_t*>(v.splitPixels.data), int(std::lround(s.splitAt * w)));
     if (s.uvPass && v.uv.size() == size_t(w) * h * 4) drawUvPass(image, v.uv.data());
     if (s.magnifier) drawMagnifier(image, int(s.cursorX), int(s.cursorY));
     if (s.help) drawTextBox(image, kHelpLines);
@@ -629,7 +718,9 @@ void renderAndShow(Viewer& v, const RenderOptions& options) {
   if (options.frames && v.samples == v.target) v.samples = 0;  // --frames: keep rendering
   const bool render = v.samples < v.target;
   if (render) {
-    renderSample(v.renderer, v.samples++);
+    if (state.split) renderSplitSample(v);
+    else renderSample(v.renderer, v.samples);
+    ++v.samples;
     v.stats.gpuMs.push_back(v.renderer.lastFrameMs);
     if (v.samples == 1 && state.uvPass) keepUvPass(v);
   }
@@ -696,6 +787,7 @@ void runFrames(Viewer& v, const RenderOptions& options) {
 }
 
 void closeViewer(Viewer& v) {
+  destroyBuffer(v.renderer.device, v.splitPixels);
   destroyWindow(v.window, v.renderer.device);
   destroyRenderer(v.renderer);
   shutdownWindowSystem();

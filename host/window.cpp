@@ -183,12 +183,13 @@ bool copyAndPresent(Window& w, const Device& d, const Image& pixels, const Buffe
   return true;
 }
 
-// The display pixels in w.composed (sized to them), the kernel's writes visible; waits.
-void readDisplayPixels(Window& w, const Device& d, const Image& pixels) {
+}  // namespace
+
+void readImagePixels(const Device& d, const Image& pixels, Buffer& into) {
   const VkDeviceSize bytes = VkDeviceSize(pixels.width) * pixels.height * 4;
-  if (w.composed.size != bytes) {
-    destroyBuffer(d, w.composed);
-    w.composed = createBuffer(d, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+  if (into.size != bytes) {
+    destroyBuffer(d, into);
+    into = createBuffer(d, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT);
   }
   VkCommandBuffer cmd = beginCommands(d);
   imageBarrier(cmd, pixels.image, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL, VK_ACCESS_SHADER_WRITE_BIT,
@@ -196,12 +197,12 @@ void readDisplayPixels(Window& w, const Device& d, const Image& pixels) {
   VkBufferImageCopy region{};
   region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
   region.imageExtent = {pixels.width, pixels.height, 1};
-  vkCmdCopyImageToBuffer(cmd, pixels.image, VK_IMAGE_LAYOUT_GENERAL, w.composed.buffer, 1, &region);
+  vkCmdCopyImageToBuffer(cmd, pixels.image, VK_IMAGE_LAYOUT_GENERAL, into.buffer, 1, &region);
   VkBufferMemoryBarrier toHost{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER};
   toHost.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
   toHost.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
   toHost.srcQueueFamilyIndex = toHost.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-  toHost.buffer = w.composed.buffer;
+  toHost.buffer = into.buffer;
   toHost.size = VK_WHOLE_SIZE;
   vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 0, nullptr, 1, &toHost, 0,
                        nullptr);
@@ -210,12 +211,10 @@ void readDisplayPixels(Window& w, const Device& d, const Image& pixels) {
   submitAndWait(d, cmd);
 }
 
-}  // namespace
-
 bool presentPixels(Window& w, const Device& d, const Image& pixels) { return copyAndPresent(w, d, pixels, nullptr); }
 
 bool presentComposed(Window& w, const Device& d, const Image& pixels, const ComposeFn& compose) {
-  readDisplayPixels(w, d, pixels);
+  readImagePixels(d, pixels, w.composed);
   compose(static_cast<uint32_t*>(w.composed.data), pixels.width, pixels.height);
   return copyAndPresent(w, d, pixels, &w.composed);
 }

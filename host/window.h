@@ -50,6 +50,10 @@ bool windowBgra(const Window& window);
 // createSwapchain again.
 bool presentPixels(Window& window, const Device& device, const Image& pixels);
 
+// Copies `image` (r32ui display pixels, GENERAL layout, written by a completed dispatch) into
+// `into`, a host-visible buffer (re-created at the image's size), readable once this returns.
+void readImagePixels(const Device& device, const Image& image, Buffer& into);
+
 // Draws over a copy of the display pixels (width x height, the image's byte order) before they
 // reach the window.
 using ComposeFn = std::function<void(uint32_t* pixels, uint32_t width, uint32_t height)>;

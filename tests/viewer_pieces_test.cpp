@@ -148,3 +148,16 @@ TEST(Overlay, TheUvPassIsRedUGreenV) {
   drawUvPass(bgra, uv);
   EXPECT_EQ(pixels[0], 0xFF80FF00u);
 }
+
+TEST(Overlay, TheSplitTakesTheRightImageFromItsColumnWithALine) {
+  std::vector<uint32_t> left(4 * 2, 0xFF000001u), right(4 * 2, 0xFF000002u);
+  OverlayPixels image{left.data(), 4, 2, false};
+  drawSplit(image, right.data(), 2);
+  const std::vector<uint32_t> expected = {0xFF000001u, 0xFF000001u, 0xFFFFFFFFu, 0xFF000002u,
+                                          0xFF000001u, 0xFF000001u, 0xFFFFFFFFu, 0xFF000002u};
+  EXPECT_EQ(left, expected);
+  std::vector<uint32_t> edge(4, 0xFF000001u);
+  OverlayPixels atEdge{edge.data(), 4, 1, false};
+  drawSplit(atEdge, right.data(), 0);  // at an edge: no line, all the right image
+  EXPECT_EQ(edge, std::vector<uint32_t>(4, 0xFF000002u));
+}

@@ -79,6 +79,15 @@ waitTitle() {  # waitTitle PATTERN: the title matches within 30 s (a loaded mach
   echo "title: $(title 2>&1)"
   return 1
 }
+waitTitleGone() {  # waitTitleGone PATTERN: the title stops matching within 30 s
+  for _ in $(seq 300); do
+    viewerGone && return 1
+    title 2>/dev/null | grep -q -- "$1" || return 0
+    sleep 0.1
+  done
+  echo "title: $(title 2>&1)"
+  return 1
+}
 # stopViewer: Escape, then the viewer's exit status within 30 s (killed and 124 after that).
 # xdotool presses a key of the focused window through the server (XTEST) but sends its release
 # to the window, which may be gone by then: the server then holds Escape down, and its
@@ -224,7 +233,11 @@ check coverage-window-shows-render "$xwdDiff" "$tmp/coverage.xwd" "$tmp/coverage
 # windowShows PNG: the window holds PNG's pixels (within 1); windowDiffers PNG: it does not.
 windowShows() { xwd -id "$wid" -silent >"$tmp/now.xwd" && "$xwdDiff" "$tmp/now.xwd" "$1" 1 >/dev/null; }
 windowDiffers() { xwd -id "$wid" -silent >"$tmp/now.xwd" && ! "$xwdDiff" "$tmp/now.xwd" "$1" 1 >/dev/null; }
-"$raytex" render "$src/scenes/textures.cfg" -o "$tmp/render-160.png" --width 160 --height 120 --spp 64
+for filter in point box coverage; do
+  "$raytex" render "$src/scenes/textures.cfg" -o "$tmp/render-160-$filter.png" --width 160 --height 120 --spp 64 \
+    --filter "$filter"
+done
+cp "$tmp/render-160-point.png" "$tmp/render-160.png"
 "$raytex" view "$src/scenes/textures.cfg" -o "$tmp/keys-shot.png" --width 160 --height 120 --validate \
   >"$tmp/keys.log" 2>&1 &
 viewer=$!
@@ -234,7 +247,7 @@ xdotool key --window "$wid" d d w
 check keys-orbit-converged waitTitle '| 64/64 samples'
 xdotool key --window "$wid" c
 check keys-c-message waitTitle 'camera printed to the terminal'
-check keys-message-clears bash -c "for _ in \$(seq 100); do xdotool getwindowname $wid | grep -q 'camera printed' || exit 0; sleep 0.1; done; exit 1"
+check keys-message-clears waitTitleGone 'camera printed'
 xdotool key --window "$wid" h
 check keys-help-shot-waits waitTitle '| 64/64 samples'
 xdotool key --window "$wid" F12
@@ -253,12 +266,38 @@ awk -v block="$tmp/printed-camera.txt" '/^camera / { skip = 1; while ((getline l
 check keys-pasted-camera-renders-f12 cmp -s "$tmp/keys-shot.png" "$tmp/printed-camera.png"
 xdotool key --window "$wid" r
 check keys-reset-converged waitTitle '| 64/64 samples'
+# V: the split screen, the render's method (point) left of the split and another right of it;
+# at either edge the window is one method's render.
+xdotool key --window "$wid" v
+check keys-v-title waitTitle '| split: point | box'
+check keys-v-converged waitTitle '| 64/64 samples'
+for _ in $(seq 16); do xdotool key --window "$wid" bracketright; done
+sleep 0.5
+check keys-split-right-edge-is-point windowShows "$tmp/render-160.png"
+for _ in $(seq 32); do xdotool key --window "$wid" bracketleft; done
+sleep 0.5
+check keys-split-left-edge-is-box windowShows "$tmp/render-160-box.png"
+xdotool key --window "$wid" b
+check keys-b-title waitTitle '| split: point | coverage'
+check keys-b-converged waitTitle '| 64/64 samples'
+check keys-split-coverage windowShows "$tmp/render-160-coverage.png"
+xdotool mousemove --window "$wid" 40 60 mousedown --window "$wid" 3 mouseup --window "$wid" 3
+sleep 0.5
+check keys-split-right-button windowDiffers "$tmp/render-160.png"
+check keys-split-right-button-coverage windowDiffers "$tmp/render-160-coverage.png"
+xdotool key --window "$wid" F12
+check keys-split-screenshot waitTitle "wrote $tmp/keys-shot.png"
+check keys-split-f12-is-the-render cmp -s "$tmp/keys-shot.png" "$tmp/render-160.png"
+xdotool key --window "$wid" v
+check keys-v-off waitTitleGone 'split'
+sleep 0.5
+check keys-v-off-shows-render windowShows "$tmp/render-160.png"
 xdotool mousemove --window "$wid" 80 50
 xdotool keydown --window "$wid" z
 check keys-z-readout waitTitle '| sphere 1 uv (0\.[0-9]*, 0\.[0-9]*) solid ('
 check keys-z-on-screen windowDiffers "$tmp/render-160.png"
 xdotool keyup --window "$wid" z
-check keys-z-off bash -c "for _ in \$(seq 50); do xdotool getwindowname $wid | grep -q 'uv (' || exit 0; sleep 0.1; done; exit 1"
+check keys-z-off waitTitleGone 'uv ('
 xdotool key --window "$wid" Tab
 check keys-tab-sphere waitTitle '| selected: sphere 1 (textures.cfg:29): aSolidChecker |'
 xdotool key --window "$wid" 5
