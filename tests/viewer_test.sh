@@ -231,8 +231,16 @@ check coverage-window-shows-render "$xwdDiff" "$tmp/coverage.xwd" "$tmp/coverage
 # (F12's file is the render's, and the window shows the render again once they are off). Tab
 # selects what the cursor is on; 1-8 and M change it; nothing selected, they change the spheres.
 # windowShows PNG: the window holds PNG's pixels (within 1); windowDiffers PNG: it does not.
-windowShows() { xwd -id "$wid" -silent >"$tmp/now.xwd" && "$xwdDiff" "$tmp/now.xwd" "$1" 1 >/dev/null; }
-windowDiffers() { xwd -id "$wid" -silent >"$tmp/now.xwd" && ! "$xwdDiff" "$tmp/now.xwd" "$1" 1 >/dev/null; }
+# Each waits up to 30 s for the window to follow a key (a loaded machine).
+windowIs() { xwd -id "$wid" -silent >"$tmp/now.xwd" && "$xwdDiff" "$tmp/now.xwd" "$1" 1 >/dev/null; }
+windowShows() {
+  for _ in $(seq 120); do windowIs "$1" && return 0; viewerGone && return 1; sleep 0.25; done
+  return 1
+}
+windowDiffers() {
+  for _ in $(seq 120); do windowIs "$1" || return 0; viewerGone && return 1; sleep 0.25; done
+  return 1
+}
 for filter in point box coverage; do
   "$raytex" render "$src/scenes/textures.cfg" -o "$tmp/render-160-$filter.png" --width 160 --height 120 --spp 64 \
     --filter "$filter"
@@ -254,7 +262,6 @@ xdotool key --window "$wid" F12
 check keys-screenshot waitTitle "wrote $tmp/keys-shot.png"
 check keys-help-on-screen windowDiffers "$tmp/keys-shot.png"
 xdotool key --window "$wid" h
-sleep 0.5
 check keys-help-off windowShows "$tmp/keys-shot.png"
 sed -n '/^camera {$/,/^}$/p' "$tmp/keys.log" >"$tmp/printed-camera.txt"
 check keys-camera-block test "$(wc -l <"$tmp/printed-camera.txt")" -eq 6
@@ -272,17 +279,14 @@ xdotool key --window "$wid" v
 check keys-v-title waitTitle '| split: point | box'
 check keys-v-converged waitTitle '| 64/64 samples'
 for _ in $(seq 16); do xdotool key --window "$wid" bracketright; done
-sleep 0.5
 check keys-split-right-edge-is-point windowShows "$tmp/render-160.png"
 for _ in $(seq 32); do xdotool key --window "$wid" bracketleft; done
-sleep 0.5
 check keys-split-left-edge-is-box windowShows "$tmp/render-160-box.png"
 xdotool key --window "$wid" b
 check keys-b-title waitTitle '| split: point | coverage'
 check keys-b-converged waitTitle '| 64/64 samples'
 check keys-split-coverage windowShows "$tmp/render-160-coverage.png"
 xdotool mousemove --window "$wid" 40 60 mousedown --window "$wid" 3 mouseup --window "$wid" 3
-sleep 0.5
 check keys-split-right-button windowDiffers "$tmp/render-160.png"
 check keys-split-right-button-coverage windowDiffers "$tmp/render-160-coverage.png"
 xdotool key --window "$wid" F12
@@ -290,7 +294,6 @@ check keys-split-screenshot waitTitle "wrote $tmp/keys-shot.png"
 check keys-split-f12-is-the-render cmp -s "$tmp/keys-shot.png" "$tmp/render-160.png"
 xdotool key --window "$wid" v
 check keys-v-off waitTitleGone 'split'
-sleep 0.5
 check keys-v-off-shows-render windowShows "$tmp/render-160.png"
 xdotool mousemove --window "$wid" 80 50
 xdotool keydown --window "$wid" z
