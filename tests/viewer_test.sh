@@ -52,11 +52,16 @@ waitWindow() {
   fi
   check "$2" test -n "$wid"
 }
+# startViewer LOG CHECK ARGS...: raytex view ARGS --validate, its output in LOG, and its window.
+startViewer() {
+  local output=$1 name=$2
+  shift 2
+  "$raytex" view "$@" --validate >"$output" 2>&1 &
+  viewer=$!
+  waitWindow "$output" "$name"  # sets the global log viewerGone prints
+}
 
-"$raytex" view "$src/scenes/textures.cfg" -o "$tmp/shot.png" --width 320 --height 240 --validate \
-  >"$tmp/view.log" 2>&1 &
-viewer=$!
-waitWindow "$tmp/view.log" window-opens
+startViewer "$tmp/view.log" window-opens "$src/scenes/textures.cfg" -o "$tmp/shot.png" --width 320 --height 240
 title() { xdotool getwindowname "$wid"; }
 # viewerGone: the viewer has exited; its last output lines are printed once, and the checks
 # that wait on its window fail at once instead of each waiting out its time.
@@ -165,10 +170,8 @@ check window-shows-render "$xwdDiff" "$tmp/window.xwd" "$tmp/render.png" 1
 mkdir -p "$tmp/scenes"
 cp "$src/scenes/textures.cfg" "$src/scenes/texture_include.cfg" "$tmp/scenes/"
 ln -s "$src/textures" "$tmp/textures"
-"$raytex" view "$tmp/scenes/textures.cfg" -o "$tmp/scenes/shot.png" --width 160 --height 120 --validate \
-  >"$tmp/reload.log" 2>&1 &
-viewer=$!
-waitWindow "$tmp/reload.log" reload-window-opens
+startViewer "$tmp/reload.log" reload-window-opens "$tmp/scenes/textures.cfg" -o "$tmp/scenes/shot.png" \
+  --width 160 --height 120
 check reload-initial waitTitle 'sphere: aSolidChecker'
 sed -i -e 's|^    aSolidChecker;|    // aSolidChecker;|' -e 's|^    // aWood;|    aWood;|' "$tmp/scenes/textures.cfg"
 check reload-applies waitTitle 'sphere: aWood .*reloaded'
@@ -204,10 +207,8 @@ check reload-clean-exit test "$rc" -eq 0 || tail -5 "$tmp/reload.log"
 # The coverage filter: each sample's edge pass writes its listed pixels' sums and display
 # pixels, so the window and F12 show the render's image (bit for bit in the PNG), after a key
 # switched the kernels (main kernel and edge pass).
-"$raytex" view "$src/scenes/textures.cfg" -o "$tmp/coverage-shot.png" --width 160 --height 120 --spp 16 \
-  --filter coverage --validate >"$tmp/coverage.log" 2>&1 &
-viewer=$!
-waitWindow "$tmp/coverage.log" coverage-window-opens
+startViewer "$tmp/coverage.log" coverage-window-opens "$src/scenes/textures.cfg" -o "$tmp/coverage-shot.png" \
+  --width 160 --height 120 --spp 16 --filter coverage
 check coverage-accumulates waitTitle '| 16/16 samples'
 xdotool key --window "$wid" 3
 check coverage-key-3-marble waitTitle 'sphere: aMarble'
@@ -246,10 +247,8 @@ for filter in point box coverage; do
     --filter "$filter"
 done
 cp "$tmp/render-160-point.png" "$tmp/render-160.png"
-"$raytex" view "$src/scenes/textures.cfg" -o "$tmp/keys-shot.png" --width 160 --height 120 --validate \
-  >"$tmp/keys.log" 2>&1 &
-viewer=$!
-waitWindow "$tmp/keys.log" keys-window-opens
+startViewer "$tmp/keys.log" keys-window-opens "$src/scenes/textures.cfg" -o "$tmp/keys-shot.png" --width 160 \
+  --height 120
 check keys-converged waitTitle '| 64/64 samples'
 xdotool key --window "$wid" d d w
 check keys-orbit-converged waitTitle '| 64/64 samples'
@@ -336,10 +335,8 @@ mkdir -p "$tmp/tutorial/mine"
 ln -s "$src/textures" "$tmp/tutorial/textures"
 bash "$src/tests/tutorial_steps.sh" "$src/docs/tutorial.md" "$tmp/tutorial/steps" >/dev/null
 cp "$tmp/tutorial/steps/step-7.cfg" "$tmp/tutorial/mine/first.cfg"
-"$raytex" view "$tmp/tutorial/mine/first.cfg" -o "$tmp/tutorial/mine/shot.png" --width 160 --height 120 --validate \
-  >"$tmp/tutorial.log" 2>&1 &
-viewer=$!
-waitWindow "$tmp/tutorial.log" tutorial-window-opens
+startViewer "$tmp/tutorial.log" tutorial-window-opens "$tmp/tutorial/mine/first.cfg" -o "$tmp/tutorial/mine/shot.png" \
+  --width 160 --height 120
 check tutorial-materials waitTitle 'sphere: stone | plane: floor'
 check tutorial-converged waitTitle '| 64/64 samples'
 xdotool key --window "$wid" F12
