@@ -58,24 +58,56 @@ uint32_t overlayPixel(const OverlayPixels& image, uint8_t r, uint8_t g, uint8_t 
   return first | uint32_t(g) << 8 | third << 16 | 0xFF000000u;
 }
 
+namespace {
+
+int textWidth(const std::string& text) {
+  std::string copy = text;
+  return stb_easy_font_width(copy.data());
+}
+
+// `text` broken at spaces into lines at most `width` of stb_easy_font's pixels wide (a word
+// wider than that on a line of its own).
+std::vector<std::string> wrapped(const std::string& text, int width) {
+  std::vector<std::string> lines{""};
+  size_t start = 0;
+  while (start <= text.size()) {
+    size_t end = text.find(' ', start);
+    if (end == std::string::npos) end = text.size();
+    const std::string word = text.substr(start, end - start);
+    const std::string joined = lines.back().empty() ? word : lines.back() + " " + word;
+    if (!lines.back().empty() && textWidth(joined) > width) lines.push_back(word);
+    else lines.back() = joined;
+    start = end + 1;
+  }
+  return lines;
+}
+
+}  // namespace
+
 void drawTextBox(OverlayPixels& image, const std::vector<std::string>& lines) {
-  int keyWidth = 0, textWidth = 0;  // in stb_easy_font's pixels
+  int keyWidth = 0, descriptionWidth = 0;  // in stb_easy_font's pixels
   for (const std::string& line : lines) {
     const size_t tab = line.find('\t');
-    std::string key = line.substr(0, tab), text = tab == std::string::npos ? "" : line.substr(tab + 1);
-    keyWidth = std::max(keyWidth, stb_easy_font_width(key.data()));
-    textWidth = std::max(textWidth, stb_easy_font_width(text.data()));
+    keyWidth = std::max(keyWidth, textWidth(line.substr(0, tab)));
+    if (tab != std::string::npos) descriptionWidth = std::max(descriptionWidth, textWidth(line.substr(tab + 1)));
   }
-  const int margin = 8, gap = 12, columns = keyWidth + gap + textWidth;
-  const int scale = columns * kTextScale + 2 * margin <= image.width ? kTextScale : 1;
-  const int lineHeight = 12 * scale;
-  darkenRect(image, 0, 0, columns * scale + 2 * margin, int(lines.size()) * lineHeight + 2 * margin);
+  const int margin = 8, gap = 12;
+  const int scale = (keyWidth + gap + descriptionWidth) * kTextScale + 2 * margin <= image.width ? kTextScale : 1;
+  // Descriptions wrap where the window is narrower than they are.
+  const int room = std::max((image.width - 2 * margin) / scale - keyWidth - gap, 1);
+  std::vector<std::pair<std::string, std::string>> rows;  // key column, description column
+  for (const std::string& line : lines) {
+    const size_t tab = line.find('\t');
+    const std::vector<std::string> parts = wrapped(tab == std::string::npos ? "" : line.substr(tab + 1), room);
+    for (size_t i = 0; i < parts.size(); ++i) rows.emplace_back(i == 0 ? line.substr(0, tab) : "", parts[i]);
+  }
+  const int lineHeight = 12 * scale, boxWidth = (keyWidth + gap + std::min(descriptionWidth, room)) * scale;
+  darkenRect(image, 0, 0, boxWidth + 2 * margin, int(rows.size()) * lineHeight + 2 * margin);
   const uint32_t white = overlayPixel(image, 255, 255, 255);
-  for (size_t i = 0; i < lines.size(); ++i) {
-    const size_t tab = lines[i].find('\t');
+  for (size_t i = 0; i < rows.size(); ++i) {
     const int y = margin + int(i) * lineHeight;
-    drawText(image, margin, y, lines[i].substr(0, tab), white, scale);
-    if (tab != std::string::npos) drawText(image, margin + (keyWidth + gap) * scale, y, lines[i].substr(tab + 1), white, scale);
+    drawText(image, margin, y, rows[i].first, white, scale);
+    drawText(image, margin + (keyWidth + gap) * scale, y, rows[i].second, white, scale);
   }
 }
 

@@ -43,7 +43,7 @@ const std::vector<std::string> kHelpLines = {
     "drag, arrows, WASD\torbit",
     "scroll, + -, PgUp PgDn\tzoom",
     "R\tthe scene file's camera",
-    "C\tprint the camera as a camera { } block",
+    "C\tprint the view as the scene file's camera block",
     "Z (hold)\tmagnifier; uv and texel in the title",
     "U\tuv pass (red u, green v)",
     "V\tsplit screen: the render's method | another",

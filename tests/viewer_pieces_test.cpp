@@ -161,3 +161,20 @@ TEST(Overlay, TheSplitTakesTheRightImageFromItsColumnWithALine) {
   drawSplit(atEdge, right.data(), 0);  // at an edge: no line, all the right image
   EXPECT_EQ(edge, std::vector<uint32_t>(4, 0xFF000002u));
 }
+
+TEST(Overlay, HelpTooWideForTheWindowWrapsItsDescriptions) {
+  const std::string line = "K\tone two three four five six seven eight nine ten eleven twelve";
+  auto lowestWhiteRow = [&](int width) {
+    std::vector<uint32_t> pixels(size_t(width) * 200, 0xFF808080u);
+    OverlayPixels image{pixels.data(), width, 200, false};
+    drawTextBox(image, {line});
+    int lowest = -1;
+    for (int y = 0; y < 200; ++y)
+      for (int x = 0; x < width; ++x)
+        if (pixels[size_t(y) * size_t(width) + size_t(x)] == 0xFFFFFFFFu) lowest = y;
+    return lowest;
+  };
+  const int wide = lowestWhiteRow(1000), narrow = lowestWhiteRow(150);
+  EXPECT_GT(wide, 0);
+  EXPECT_GT(narrow, wide + 24);  // at least two more lines of 12 pixels
+}
