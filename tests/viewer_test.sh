@@ -93,7 +93,8 @@ waitTitleGone() {  # waitTitleGone PATTERN: the title stops matching within 30 s
   echo "title: $(title 2>&1)"
   return 1
 }
-# stopViewer: Escape, then the viewer's exit status within 30 s (killed and 124 after that).
+# stopViewer [KEY]: Escape (or KEY: q), then the viewer's exit status within 30 s (killed and
+# 124 after that).
 # xdotool presses a key of the focused window through the server (XTEST) but sends its release
 # to the window, which may be gone by then: the server then holds Escape down, and its
 # autorepeat closes the next viewer as it opens. So Escape is released through the server too.
@@ -101,8 +102,8 @@ stopViewer() {
   if viewerGone; then
     rc=1
   else
-    xdotool key --window "$wid" Escape 2>/dev/null
-    xdotool keyup Escape 2>/dev/null
+    xdotool key --window "$wid" "${1:-Escape}" 2>/dev/null
+    xdotool keyup "${1:-Escape}" 2>/dev/null
     for _ in $(seq 300); do kill -0 "$viewer" 2>/dev/null || break; sleep 0.1; done
     local killed=0
     kill -0 "$viewer" 2>/dev/null && { kill -9 "$viewer"; killed=1; }
@@ -272,6 +273,18 @@ awk -v block="$tmp/printed-camera.txt" '/^camera / { skip = 1; while ((getline l
 check keys-pasted-camera-renders-f12 cmp -s "$tmp/keys-shot.png" "$tmp/printed-camera.png"
 xdotool key --window "$wid" r
 check keys-reset-converged waitTitle '| 64/64 samples'
+# Zoom in and out by keys and the wheel: the view changes, and comes back to the scene file's
+# (the viewer keeps its camera as C would print it, so the steps cancel exactly).
+for keys in "equal minus" "KP_Add KP_Subtract" "Page_Up Page_Down"; do
+  xdotool key --window "$wid" "${keys% *}"
+  check "keys-zoom-in-${keys% *}" windowDiffers "$tmp/render-160.png"
+  xdotool key --window "$wid" "${keys#* }"
+  check "keys-zoom-out-${keys#* }" windowShows "$tmp/render-160.png"
+done
+xdotool mousemove --window "$wid" 80 60 click --window "$wid" 4
+check keys-wheel-in windowDiffers "$tmp/render-160.png"
+xdotool click --window "$wid" 5
+check keys-wheel-out windowShows "$tmp/render-160.png"
 # V: the split screen, the render's method (point) left of the split and another right of it;
 # at either edge the window is one method's render.
 xdotool key --window "$wid" v
@@ -350,7 +363,7 @@ xdotool key --window "$wid" m
 check tutorial-m-own-materials waitTitle 'sphere: floor .* selected: sphere 1 (first.cfg:[0-9]*): floor |'
 sed -i 's|texture = marble { }|texture = wood { }|' "$tmp/tutorial/mine/first.cfg"
 check tutorial-reload waitTitle 'sphere: stone .*reloaded'
-stopViewer
+stopViewer q
 check tutorial-clean-exit test "$rc" -eq 0 || tail -5 "$tmp/tutorial.log"
 check tutorial-no-validation-errors test "$(grep -c 'validation error' "$tmp/tutorial.log")" -eq 0
 
