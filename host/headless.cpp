@@ -49,7 +49,7 @@ bool samplesPerDispatch(const Renderer& renderer, const Scene& scene, const GpuS
   if (renderer.coverage) return true;
   const uint32_t traces = job.samplesPerPixel + (renderer.passMask != 0 ? 1 : 0);
   return renderer.device.lavapipe && (gpuScene.shape.sphereTree != SPHERE_TREE_NONE ||
-                                      traces * loopIterationsPerSample(scene) > kMaxLoopIterations);
+                                      !withinLoopLimit(scene, traces));
 }
 
 // The kernel built around the scene's values (the camera is fixed), and tile kernels where they

@@ -43,9 +43,9 @@ size_t loopTestedObjects(const Scene& scene) {
 }
 
 void checkLoopLimit(const Scene& scene, uint32_t traces) {
+  if (withinLoopLimit(scene, traces)) return;
   const size_t objects = loopTestedObjects(scene);
   const uint64_t iterations = traces * loopIterationsPerSample(scene);
-  if (iterations <= kMaxLoopIterations) return;
   // With n lights, traces ((n + 1) (objects + 3) + reserve) passes the limit from
   // n = (limit / traces - reserve) / (objects + 3) on.
   const uint64_t reserve = LOOP_PASSES_PER_SAMPLE + 1, perLight = objects + 3;

@@ -30,6 +30,11 @@ inline uint64_t loopIterationsPerSample(const Scene& scene) {
   return uint64_t(scene.lights.size() + 1) * uint64_t(loopTestedObjects(scene) + 3) + LOOP_PASSES_PER_SAMPLE + 1;
 }
 
+// Whether `traces` samples' loops stay within kMaxLoopIterations (on lavapipe; see checkLoopLimit).
+inline bool withinLoopLimit(const Scene& scene, uint32_t traces) {
+  return traces * loopIterationsPerSample(scene) <= kMaxLoopIterations;
+}
+
 // Throws SceneError (at the first light over) when `traces` samples' loops pass
 // kMaxLoopIterations: 1 for a kernel's sample, 2 for the coverage filter's edge pass, which shades
 // both sides of an edge in one invocation. Applies to lavapipe only; samples that together would

@@ -458,25 +458,8 @@ KernelKey allKindsKey(const GpuScene& packed, const Scene& scene, const RenderJo
   return key;
 }
 
-// Makes viewerKernels' kernels current, over their tiles for the camera as packed: after every
-// pack, the only times the key or the tiles change. While one of them has not run yet (lavapipe
-// compiles at the first dispatch) and the all-kinds kernel has, that one renders instead, so
-// that no key waits for a compile; returns false then (waitForWork compiles the others).
-bool prepareViewerKernels(Renderer& renderer, const GpuScene& packed, const Scene& scene, const RenderJob& job) {
-  bool ready = true;
-  for (const KernelKey& k : viewerKernels(renderer, packed, scene, job)) ready = ready && pipelineWarm(renderer, k);
-  const KernelKey all = allKindsKey(packed, scene, job);
-  if (!ready && pipelineWarm(renderer, all)) {
-    preparePipeline(renderer, all);
-    return false;
-  }
-  const KernelKey key = viewerKey(packed, scene, job);
-  const std::vector<TextureKinds> sets = viewerTileSets(renderer, key);
-  prepareTileKernels(renderer, key, sets.empty() ? TilePlan{} : assignTiles(sets, tileKinds(packed), packed.tiles.columns));
-  return true;
-}
-
-// The first of the current scene's specialised kernels not compiled yet; false when all are.
+// The first of the current scene's specialised kernels (viewerKernels) not compiled yet; false
+// when all are.
 bool pendingKernel(const Renderer& renderer, const GpuScene& packed, const Scene& scene, const RenderJob& job,
                    KernelKey* key) {
   for (const KernelKey& k : viewerKernels(renderer, packed, scene, job))
@@ -485,6 +468,25 @@ bool pendingKernel(const Renderer& renderer, const GpuScene& packed, const Scene
       return true;
     }
   return false;
+}
+
+// Makes viewerKernels' kernels current, over their tiles for the camera as packed: after every
+// pack, the only times the key or the tiles change. While one of them has not run yet (lavapipe
+// compiles at the first dispatch) and the all-kinds kernel has, that one renders instead, so
+// that no key waits for a compile; returns false then (waitForWork compiles the others).
+bool prepareViewerKernels(Renderer& renderer, const GpuScene& packed, const Scene& scene, const RenderJob& job) {
+  KernelKey pending;
+  if (pendingKernel(renderer, packed, scene, job, &pending)) {
+    const KernelKey all = allKindsKey(packed, scene, job);
+    if (pipelineWarm(renderer, all)) {
+      preparePipeline(renderer, all);
+      return false;
+    }
+  }
+  const KernelKey key = viewerKey(packed, scene, job);
+  const std::vector<TextureKinds> sets = viewerTileSets(renderer, key);
+  prepareTileKernels(renderer, key, sets.empty() ? TilePlan{} : assignTiles(sets, tileKinds(packed), packed.tiles.columns));
+  return true;
 }
 
 // A pipeline a key could need next that has not run yet: the all-kinds kernel, then the course
@@ -539,6 +541,8 @@ struct Viewer {
   GpuScene gpuScene;
   uint32_t target = 1;   // samples per pixel to accumulate
   uint32_t samples = 0;  // accumulated in the image on screen
+  bool allKindsWarm = false;  // the all-kinds kernel of the packed scene has run (reset with each upload)
+  KernelKey splitKeys[2];     // V: the kernels of the split's other method and of the job's, as packed
   std::vector<float> uv;  // U: the uv pass of the image on screen (AOV_UV, a vec4 a pixel)
   Buffer splitPixels;     // V: the other method's display pixels, read back to draw beside the job's
   std::vector<std::filesystem::file_time_type> fileTimes;
@@ -596,9 +600,10 @@ void waitForWork(Viewer& v, bool keepRendering) {
   ViewerState& s = v.state;
   const bool busy = v.samples < v.target || s.dirty || s.cameraMoved || s.refresh || s.screenshot;
   KernelKey warm;
-  const KernelKey all = allKindsKey(v.gpuScene, s.scene, v.job);
-  if (!keepRendering && v.samples > 0 && !pipelineWarm(v.renderer, all)) {
-    warmPipeline(v.renderer, all);
+  if (!keepRendering && v.samples > 0 && !v.allKindsWarm) {
+    const KernelKey all = allKindsKey(v.gpuScene, s.scene, v.job);
+    if (!pipelineWarm(v.renderer, all)) warmPipeline(v.renderer, all);
+    v.allKindsWarm = true;
     glfwPollEvents();
   } else if (busy || keepRendering) {
     glfwPollEvents();
@@ -615,8 +620,6 @@ void waitForWork(Viewer& v, bool keepRendering) {
   }
 }
 
-// Re-packs and uploads what changed: everything for a new size, scene file or unpacked
-// material; camera-relative positions and material indices for a camera move or a key.
 // What the renderer and the packing need for U and V: the uv pass, the coverage filter's edge
 // list, a second accumulation set and mip chains. Changes mark the scene dirty; returns whether
 // the scene must be packed again (its images with or without mip chains).
@@ -624,19 +627,19 @@ bool configureMethods(Viewer& v) {
   ViewerState& state = v.state;
   Renderer& r = v.renderer;
   auto uses = [&](TextureFilter f) { return state.filter == f || (state.split && state.splitFilter == f); };
-  // On lavapipe, the uv pass (the pixel centre traced once more) and the coverage filter's edge
-  // pass only within its loop limit.
-  const uint64_t perSample = r.device.lavapipe ? loopIterationsPerSample(state.scene) : 0;
-  if (uses(TextureFilter::Coverage) && !r.coverage && loopTraces(true) * perSample > kMaxLoopIterations) {
+  // On lavapipe, the coverage filter's edge pass and the uv pass (the pixel centre traced once
+  // more) only within its loop limit.
+  auto fits = [&](uint32_t traces) { return !r.device.lavapipe || withinLoopLimit(state.scene, traces); };
+  if (uses(TextureFilter::Coverage) && !r.coverage && !fits(loopTraces(true))) {
     state.split = false;
     say(state, "no split with coverage: this scene would pass the lavapipe driver's loop limit");
   }
-  if (state.uvPass && (loopTraces(r.coverage) + 1) * perSample > kMaxLoopIterations) {
+  const bool edges = uses(TextureFilter::Coverage);
+  if (state.uvPass && !fits(loopTraces(edges) + 1)) {
     state.uvPass = false;
     say(state, "no uv pass: this scene would pass the lavapipe driver's loop limit");
   }
   const uint32_t passes = state.uvPass ? 1u << AOV_UV : 0u;
-  const bool edges = uses(TextureFilter::Coverage);
   const bool mipmaps = uses(TextureFilter::Box) || edges;
   const bool changed = passes != r.passMask || edges != r.coverage || state.split != r.secondAccumulation;
   r.passMask = passes;
@@ -667,11 +670,19 @@ void updateScene(Viewer& v, VkExtent2D size) {
   }
   state.reloaded.reset();
   packCamera(v.gpuScene, state.scene, size.width, size.height);
-  if (state.dirty)
+  if (state.dirty) {
     uploadScene(v.renderer, v.gpuScene);
-  else
+    v.allKindsWarm = false;  // the scene's materials or the passes may have changed
+  } else {
     updateSceneBuffers(v.renderer, v.gpuScene);
+  }
   state.specialisedPending = !prepareViewerKernels(v.renderer, v.gpuScene, state.scene, v.job);
+  if (state.split) {
+    RenderJob other = v.job;
+    other.filter = state.splitFilter;
+    v.splitKeys[0] = viewerKey(v.gpuScene, state.scene, other);
+    v.splitKeys[1] = viewerKey(v.gpuScene, state.scene, v.job);
+  }
   state.dirty = state.cameraMoved = false;
   v.samples = 0;
 }
@@ -686,13 +697,11 @@ void keepUvPass(Viewer& v) {
 // V: the sample of the split's other method into the second accumulation set, then the job's
 // own into the first, which F12 reads.
 void renderSplitSample(Viewer& v) {
-  RenderJob other = v.job;
-  other.filter = v.state.splitFilter;
-  preparePipeline(v.renderer, viewerKey(v.gpuScene, v.state.scene, other));
+  preparePipeline(v.renderer, v.splitKeys[0]);
   swapAccumulation(v.renderer);
   renderSample(v.renderer, v.samples);
   swapAccumulation(v.renderer);
-  preparePipeline(v.renderer, viewerKey(v.gpuScene, v.state.scene, v.job));
+  preparePipeline(v.renderer, v.splitKeys[1]);
   renderSample(v.renderer, v.samples);
 }
 
