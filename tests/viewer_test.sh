@@ -84,6 +84,10 @@ waitTitle() {  # waitTitle PATTERN: the title matches within 30 s (a loaded mach
   echo "title: $(title 2>&1)"
   return 1
 }
+keyThenTitle() {  # keyThenTitle CHECK KEY PATTERN: KEY, then the title matches PATTERN
+  xdotool key --window "$wid" "$2"
+  check "$1" waitTitle "$3"
+}
 waitTitleGone() {  # waitTitleGone PATTERN: the title stops matching within 30 s
   for _ in $(seq 300); do
     viewerGone && return 1
@@ -116,16 +120,11 @@ stopViewer() {
 }
 check initial-materials waitTitle 'sphere: aSolidChecker | plane: aChecker'
 check accumulates waitTitle '| 64/64 samples'
-xdotool key --window "$wid" 3
-check key-3-marble waitTitle 'sphere: aMarble'
-xdotool key --window "$wid" p
-check key-p-plane waitTitle 'plane: aSolidChecker'
-xdotool key --window "$wid" p
-check key-p-cycles waitTitle 'plane: aNoise'
-xdotool key --window "$wid" 5
-check key-5-image waitTitle 'sphere: anImage | plane: aNoise'
-xdotool key --window "$wid" F12
-check screenshot waitTitle "wrote $tmp/shot.png"
+keyThenTitle key-3-marble 3 'sphere: aMarble'
+keyThenTitle key-p-plane p 'plane: aSolidChecker'
+keyThenTitle key-p-cycles p 'plane: aNoise'
+keyThenTitle key-5-image 5 'sphere: anImage | plane: aNoise'
+keyThenTitle screenshot F12 "wrote $tmp/shot.png"
 cp "$tmp/shot.png" "$tmp/first.png"
 # Orbit away: the frame changes; R resets: the frame is the scene file's view again.
 waitShot() {  # waitShot: F12, then the new file appears
@@ -197,8 +196,7 @@ cp "$src/textures/uv_grid.png" "$tmp/scenes/shot.png"
 sed -i 's|"../textures/earth.jpg"|"shot.png"|' "$tmp/scenes/texture_include.cfg"
 sed -i -e 's|^    aWood;|    // aWood;|' -e 's|^    // anImage;|    anImage;|' "$tmp/scenes/textures.cfg"
 check reload-output-image waitTitle 'sphere: anImage .*reloaded'
-xdotool key --window "$wid" F12
-check reload-output-refused-title waitTitle 'not saved'
+keyThenTitle reload-output-refused-title F12 'not saved'
 check reload-output-refused-message grep -q "refusing to write '$tmp/scenes/shot.png': it is an image the scene uses" \
   "$tmp/reload.log"
 check reload-output-unchanged cmp -s "$src/textures/uv_grid.png" "$tmp/scenes/shot.png"
@@ -211,11 +209,9 @@ check reload-clean-exit test "$rc" -eq 0 || tail -5 "$tmp/reload.log"
 startViewer "$tmp/coverage.log" coverage-window-opens "$src/scenes/textures.cfg" -o "$tmp/coverage-shot.png" \
   --width 160 --height 120 --spp 16 --filter coverage
 check coverage-accumulates waitTitle '| 16/16 samples'
-xdotool key --window "$wid" 3
-check coverage-key-3-marble waitTitle 'sphere: aMarble'
+keyThenTitle coverage-key-3-marble 3 'sphere: aMarble'
 check coverage-converged waitTitle '| 16/16 samples'
-xdotool key --window "$wid" F12
-check coverage-screenshot waitTitle "wrote $tmp/coverage-shot.png"
+keyThenTitle coverage-screenshot F12 "wrote $tmp/coverage-shot.png"
 xwd -id "$wid" -silent >"$tmp/coverage.xwd"
 stopViewer
 check coverage-clean-exit test "$rc" -eq 0 || tail -5 "$tmp/coverage.log"
@@ -253,13 +249,10 @@ startViewer "$tmp/keys.log" keys-window-opens "$src/scenes/textures.cfg" -o "$tm
 check keys-converged waitTitle '| 64/64 samples'
 xdotool key --window "$wid" d d w
 check keys-orbit-converged waitTitle '| 64/64 samples'
-xdotool key --window "$wid" c
-check keys-c-message waitTitle 'camera printed to the terminal'
+keyThenTitle keys-c-message c 'camera printed to the terminal'
 check keys-message-clears waitTitleGone 'camera printed'
-xdotool key --window "$wid" h
-check keys-help-shot-waits waitTitle '| 64/64 samples'
-xdotool key --window "$wid" F12
-check keys-screenshot waitTitle "wrote $tmp/keys-shot.png"
+keyThenTitle keys-help-shot-waits h '| 64/64 samples'
+keyThenTitle keys-screenshot F12 "wrote $tmp/keys-shot.png"
 check keys-help-on-screen windowDiffers "$tmp/keys-shot.png"
 xdotool key --window "$wid" h
 check keys-help-off windowShows "$tmp/keys-shot.png"
@@ -271,8 +264,7 @@ awk -v block="$tmp/printed-camera.txt" '/^camera / { skip = 1; while ((getline l
   "$src/scenes/textures.cfg" >"$tmp/headless/scenes/printed-camera.cfg"
 "$raytex" render "$tmp/headless/scenes/printed-camera.cfg" -o "$tmp/printed-camera.png" --width 160 --height 120 --spp 64
 check keys-pasted-camera-renders-f12 cmp -s "$tmp/keys-shot.png" "$tmp/printed-camera.png"
-xdotool key --window "$wid" r
-check keys-reset-converged waitTitle '| 64/64 samples'
+keyThenTitle keys-reset-converged r '| 64/64 samples'
 # Zoom in and out by keys and the wheel: the view changes, and comes back to the scene file's
 # (the viewer keeps its camera as C would print it, so the steps cancel exactly).
 for keys in "equal minus" "KP_Add KP_Subtract" "Page_Up Page_Down"; do
@@ -287,22 +279,19 @@ xdotool click --window "$wid" 5
 check keys-wheel-out windowShows "$tmp/render-160.png"
 # V: the split screen, the render's method (point) left of the split and another right of it;
 # at either edge the window is one method's render.
-xdotool key --window "$wid" v
-check keys-v-title waitTitle '| split: point | box'
+keyThenTitle keys-v-title v '| split: point | box'
 check keys-v-converged waitTitle '| 64/64 samples'
 for _ in $(seq 16); do xdotool key --window "$wid" bracketright; done
 check keys-split-right-edge-is-point windowShows "$tmp/render-160.png"
 for _ in $(seq 32); do xdotool key --window "$wid" bracketleft; done
 check keys-split-left-edge-is-box windowShows "$tmp/render-160-box.png"
-xdotool key --window "$wid" b
-check keys-b-title waitTitle '| split: point | coverage'
+keyThenTitle keys-b-title b '| split: point | coverage'
 check keys-b-converged waitTitle '| 64/64 samples'
 check keys-split-coverage windowShows "$tmp/render-160-coverage.png"
 xdotool mousemove --window "$wid" 40 60 mousedown --window "$wid" 3 mouseup --window "$wid" 3
 check keys-split-right-button windowDiffers "$tmp/render-160.png"
 check keys-split-right-button-coverage windowDiffers "$tmp/render-160-coverage.png"
-xdotool key --window "$wid" F12
-check keys-split-screenshot waitTitle "wrote $tmp/keys-shot.png"
+keyThenTitle keys-split-screenshot F12 "wrote $tmp/keys-shot.png"
 check keys-split-f12-is-the-render cmp -s "$tmp/keys-shot.png" "$tmp/render-160.png"
 xdotool key --window "$wid" v
 check keys-v-off waitTitleGone 'split'
@@ -313,27 +302,19 @@ check keys-z-readout waitTitle '| sphere 1 uv (0\.[0-9]*, 0\.[0-9]*) solid ('
 check keys-z-on-screen windowDiffers "$tmp/render-160.png"
 xdotool keyup --window "$wid" z
 check keys-z-off waitTitleGone 'uv ('
-xdotool key --window "$wid" Tab
-check keys-tab-sphere waitTitle '| selected: sphere 1 (textures.cfg:29): aSolidChecker |'
-xdotool key --window "$wid" 5
-check keys-5-on-selection waitTitle 'sphere: anImage .* selected: sphere 1 (textures.cfg:29): anImage'
+keyThenTitle keys-tab-sphere Tab '| selected: sphere 1 (textures.cfg:29): aSolidChecker |'
+keyThenTitle keys-5-on-selection 5 'sphere: anImage .* selected: sphere 1 (textures.cfg:29): anImage'
 xdotool keydown --window "$wid" z
 check keys-z-texel waitTitle 'sphere 1 uv (.*) texel ([0-9]*, [0-9]*) of earth\.jpg'
 xdotool keyup --window "$wid" z
 xdotool mousemove --window "$wid" 80 110
-xdotool key --window "$wid" Tab
-check keys-tab-plane waitTitle '| selected: plane 1 (textures.cfg:4[0-9]): aChecker |'
-xdotool key --window "$wid" 3
-check keys-3-on-plane waitTitle 'sphere: anImage | plane: aMarble'
-xdotool key --window "$wid" m
-check keys-m-next waitTitle 'plane: aWood .* selected: plane 1 (textures.cfg:4[0-9]): aWood'
+keyThenTitle keys-tab-plane Tab '| selected: plane 1 (textures.cfg:4[0-9]): aChecker |'
+keyThenTitle keys-3-on-plane 3 'sphere: anImage | plane: aMarble'
+keyThenTitle keys-m-next m 'plane: aWood .* selected: plane 1 (textures.cfg:4[0-9]): aWood'
 xdotool mousemove --window "$wid" 80 2
-xdotool key --window "$wid" Tab
-check keys-tab-nothing waitTitle 'nothing selected'
-xdotool key --window "$wid" m
-check keys-m-every-sphere waitTitle 'sphere: aTurbulence | plane: aWood'
-xdotool key --window "$wid" u
-check keys-u-title waitTitle '| uv pass'
+keyThenTitle keys-tab-nothing Tab 'nothing selected'
+keyThenTitle keys-m-every-sphere m 'sphere: aTurbulence | plane: aWood'
+keyThenTitle keys-u-title u '| uv pass'
 check keys-u-converged waitTitle '| 64/64 samples'
 check keys-u-on-screen windowDiffers "$tmp/render-160.png"
 xdotool key --window "$wid" u
@@ -352,15 +333,12 @@ startViewer "$tmp/tutorial.log" tutorial-window-opens "$tmp/tutorial/mine/first.
   --width 160 --height 120
 check tutorial-materials waitTitle 'sphere: stone | plane: floor'
 check tutorial-converged waitTitle '| 64/64 samples'
-xdotool key --window "$wid" F12
-check tutorial-screenshot waitTitle "wrote $tmp/tutorial/mine/shot.png"
+keyThenTitle tutorial-screenshot F12 "wrote $tmp/tutorial/mine/shot.png"
 "$raytex" render "$tmp/tutorial/mine/first.cfg" -o "$tmp/tutorial/render.png" --width 160 --height 120 --spp 64
 check tutorial-screenshot-equals-render cmp -s "$tmp/tutorial/mine/shot.png" "$tmp/tutorial/render.png"
 xdotool mousemove --window "$wid" 80 65
-xdotool key --window "$wid" Tab
-check tutorial-tab-sphere waitTitle '| selected: sphere 1 (first.cfg:[0-9]*): stone |'
-xdotool key --window "$wid" m
-check tutorial-m-own-materials waitTitle 'sphere: floor .* selected: sphere 1 (first.cfg:[0-9]*): floor |'
+keyThenTitle tutorial-tab-sphere Tab '| selected: sphere 1 (first.cfg:[0-9]*): stone |'
+keyThenTitle tutorial-m-own-materials m 'sphere: floor .* selected: sphere 1 (first.cfg:[0-9]*): floor |'
 sed -i 's|texture = marble { }|texture = wood { }|' "$tmp/tutorial/mine/first.cfg"
 check tutorial-reload waitTitle 'sphere: stone .*reloaded'
 stopViewer q
