@@ -19,6 +19,7 @@
 #include "common.h"
 #include "gpu_scene.h"
 #include "image_io.h"
+#include "input_file.h"
 #include "output_file.h"
 #include "median.h"
 #include "noise.h"
@@ -190,8 +191,10 @@ const float* readbackYardstick(Yardstick& y, const Device& device) {
 // --- raytex's scenes: the course scene's text, edited as the notes say
 
 std::string readFile(const std::string& path) {
-  std::string text;
-  if (!readTextFile(path, &text)) throw std::runtime_error("cannot read " + path);
+  std::string text, why;
+  uint64_t size = 0;
+  if (readWholeFile(path, uint64_t(1) << 30, &text, &why, &size) != ReadStatus::Read)
+    throw std::runtime_error("cannot read " + path);
   return text;
 }
 

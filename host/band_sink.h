@@ -27,6 +27,8 @@ struct BandSink {
   // Writes what is left once every row is in; the file stays invisible until commit().
   virtual void complete() = 0;
   virtual void commit() = 0;
+  // Removes the file commit() put in place (output_file.h, OutputFile::withdraw).
+  virtual void withdraw() = 0;
   // Colour values written as 0 because they were not finite (PNG; EXR and PFM keep them).
   virtual size_t nonFinite() const { return 0; }
 };

@@ -3,7 +3,6 @@
 #include "error.h"
 
 #include <cerrno>
-#include <map>
 
 #include <sys/stat.h>
 #include <unistd.h>
@@ -35,13 +34,6 @@ std::vector<BatchItem> planBatch(const std::vector<std::string>& scenes, const s
                                  const std::string& extension) {
   checkDirectory(directory);
   std::vector<BatchItem> items;
-  std::map<std::string, std::string> sceneOf;  // output -> the scene writing it
-  for (const std::string& scene : scenes) {
-    const std::string output = directory + sceneStem(scene) + extension;
-    auto [it, added] = sceneOf.emplace(output, scene);
-    if (!added)
-      throw UsageError("'" + it->second + "' and '" + scene + "' would both write '" + output + "'");
-    items.push_back({scene, output});
-  }
+  for (const std::string& scene : scenes) items.push_back({scene, directory + sceneStem(scene) + extension});
   return items;
 }

@@ -13,8 +13,8 @@ struct BatchItem {
 bool isOutputDirectory(const std::string& output);
 
 // The image each scene writes into `directory` (ending in '/'), with the extension `extension`
-// (".png"). Throws UsageError when two scenes would write the same file, and UsageError or
-// IoError when the directory is missing, not a directory or not writable, before anything
-// renders.
+// (".png"). Throws UsageError or IoError when the directory is missing, not a directory or not
+// writable, before anything renders. Two scenes writing one file, or an image replacing a file
+// a scene reads, are the output plan's to refuse (headless.cpp, output_plan.h).
 std::vector<BatchItem> planBatch(const std::vector<std::string>& scenes, const std::string& directory,
                                  const std::string& extension);

@@ -103,7 +103,7 @@ void runBench(const RenderOptions& options, const BenchOptions& bench) {
     frames.insert(frames.end(), last.frameMs.begin(), last.frameMs.end());
   }
   BenchResult r{mediansOf(runs, frames), last.job, last.deviceName, {}, 0, 0};
-  r.rays = countRays(parseSceneFile(options.scene, ReadPolicy{options.allowRead}), r.job.width, r.job.height,
+  r.rays = countRays(parseSceneFile(options.scene, readPolicyOf(options)), r.job.width, r.job.height,
                      r.job.samplesPerSide);
   const double frameSeconds = r.m.frame * 1e-3;
   if (frameSeconds > 0) {

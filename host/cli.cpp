@@ -92,7 +92,8 @@ struct CliOption {
 const CliOption kOptions[] = {
     {"--output", "-o", "FILE", kAll,
      "the PNG to write (default out.png; bench writes one only when given), atomically; a device or FIFO "
-     "is written through; - is standard output (render only); the scene's own files are refused; DIR/ "
+     "is written through; - is standard output (render only); a file the command reads, or writes already, is "
+     "refused before any work (docs/outputs.md, the output plan); DIR/ "
      "(render): each scene's image as DIR/<scene>.png, required with several scenes",
      [](CliArgs& c, const std::string& f, const std::string& v) { c.render.output = nonEmpty(f, v, "a file name"); }},
     {"--format", nullptr, "FORMAT", kRender,
@@ -154,6 +155,10 @@ const CliOption kOptions[] = {
     {"--max-image-mib", nullptr, "N", kAll,
      "refuse a scene whose image textures would upload more than N MiB (default 512)",
      [](CliArgs& c, const std::string& f, const std::string& v) { c.render.maxImageMiB = parseUint(f, v, 1, 1048576); }},
+    {"--max-scene-mib", nullptr, "N", kAll,
+     "refuse a scene whose files (the scene and every file it includes, each time it is included) hold more "
+     "than N MiB together (default 256)",
+     [](CliArgs& c, const std::string& f, const std::string& v) { c.render.maxSceneMiB = parseUint(f, v, 1, 1048576); }},
     {"--allow-read", nullptr, "DIR", kAll,
      "read #include files and images only inside DIR (repeatable; the scene named is always read): "
      "docs/security.md",
@@ -169,8 +174,8 @@ const CliOption kOptions[] = {
      "step between 8-bit sRGB codes, so rounding never counts)",
      [](CliArgs& c, const std::string& f, const std::string& v) { c.diff.threshold = parseNumber(f, v, 0.0, 1e30); }},
     {"--heatmap", nullptr, "FILE", kDiff | kRender,
-     "write the FLIP error per pixel as a PNG heat map (dark purple: none, pale yellow: the most), atomically; the "
-     "images compared are refused",
+     "write the FLIP error per pixel as a PNG heat map (dark purple: none, pale yellow: the most), atomically; a "
+     "file the command reads or writes already is refused",
      [](CliArgs& c, const std::string& f, const std::string& v) { c.diff.heatmap = nonEmpty(f, v, "a file name"); }},
     {"--fail-rmse", nullptr, "X", kDiff | kRender, "exit 1 (render --compare: 3) when the RMSE (linear) exceeds X",
      [](CliArgs& c, const std::string& f, const std::string& v) { c.diff.failRmse = parseNumber(f, v, 0.0, 1e30); }},
@@ -432,6 +437,10 @@ CliArgs parseCli(const std::vector<std::string>& args) {
   const char* env = getenv("RAYTEX_VALIDATION");
   if (env && std::string(env) == "1" && !cli.render.reference) cli.render.validate = true;
   return cli;
+}
+
+ReadPolicy readPolicyOf(const RenderOptions& options) {
+  return ReadPolicy{options.allowRead, uint64_t(options.maxSceneMiB) << 20};
 }
 
 TextureFilter resolvedFilter(const RenderOptions& options, const RenderSettings& s) {

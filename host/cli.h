@@ -2,7 +2,9 @@
 // reference in docs/cli.md all read. No Vulkan.
 #pragma once
 
+#include "output_plan.h"
 #include "passes.h"
+#include "read_policy.h"
 #include "scene.h"
 #include "scene_images.h"
 
@@ -32,7 +34,9 @@ struct RenderOptions {
   bool validate = false;  // --validate, or RAYTEX_VALIDATION=1: Vulkan validation layers
   uint32_t frames = 0;    // view --frames N: quit after N frames (accumulation restarting)
   uint32_t maxImageMiB = kDefaultMaxImageMiB;  // --max-image-mib N: budget of image texture bytes uploaded
+  uint32_t maxSceneMiB = kDefaultMaxSceneMiB;  // --max-scene-mib N: budget of scene text read
   std::vector<std::string> allowRead;  // --allow-read DIR (repeatable): includes and images only there
+  OutputPlan alongside;  // files read and written besides the render's own (render --compare), checked with them
 };
 
 struct BenchOptions {
@@ -73,6 +77,9 @@ struct RenderJob {
   TextureFilter filter = TextureFilter::Point;
   ImageFilter imageFilter = ImageFilter::Anisotropic;
 };
+
+// What the scene may make raytex read: --allow-read and --max-scene-mib.
+ReadPolicy readPolicyOf(const RenderOptions& options);
 
 // The filter: --filter, else the scene's render block, else point.
 TextureFilter resolvedFilter(const RenderOptions& options, const RenderSettings& scene);

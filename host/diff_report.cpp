@@ -50,11 +50,6 @@ std::string formatted(const char* format, double v) {
   return buf;
 }
 
-bool sameFile(const struct stat& a, const std::string& path) {
-  struct stat b;
-  return stat(path.c_str(), &b) == 0 && a.st_dev == b.st_dev && a.st_ino == b.st_ino;
-}
-
 // Refuses an image holding NaN or infinity: no measure of a difference is defined there.
 void requireFinite(const std::string& path, const FloatImage& image) {
   const size_t bad = nonFiniteCount(image);
@@ -123,23 +118,31 @@ std::vector<std::string> exceededLimits(const DiffReport& report, const DiffOpti
   return lines;
 }
 
-void checkHeatmapPath(const DiffOptions& options) {
+OutputPlan comparePlan(const DiffOptions& options) {
+  OutputPlan plan;
+  plan.reads.push_back({options.reference, "the reference image --compare reads", true});
+  planHeatmap(plan, options);
+  return plan;
+}
+
+void planHeatmap(OutputPlan& plan, const DiffOptions& options) {
   const std::string& path = options.heatmap;
   if (path.empty()) return;
   if (path == "-") throw UsageError("--heatmap writes a file: standard output carries the report");
+  plan.writes.push_back({path, "the heat map", true, ""});
   struct stat st;
-  const bool exists = stat(path.c_str(), &st) == 0;
-  for (const std::string& input : {options.reference, options.test})
-    if (exists && sameFile(st, input))
-      throw UsageError("refusing to write '" + path + "': it is the image '" + input + "' compared");
-  if (exists && !S_ISREG(st.st_mode) && !S_ISDIR(st.st_mode)) return;  // a device or FIFO: written through
+  if (stat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode) && !S_ISDIR(st.st_mode)) return;  // written through
   std::string ext = std::filesystem::path(path).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
   if (ext != ".png") throw UsageError("cannot write '" + path + "': the heat map is a PNG file (.png)");
 }
 
 int runDiff(const DiffOptions& options) {
-  checkHeatmapPath(options);
+  OutputPlan plan;
+  plan.reads.push_back({options.reference, "an image compared", true});
+  plan.reads.push_back({options.test, "an image compared", true});
+  planHeatmap(plan, options);
+  checkPlan(plan);
   // The measures allocate and free planes of up to 32 MiB many times over. Kept in the heap they
   // are reused; mapped afresh each time (glibc's default), every page faults again, which took
   // half the time of a 1920x1080 comparison.

@@ -35,10 +35,15 @@ std::string diffJson(const DiffReport& report);
 // One line per --fail-* limit the report exceeds ("RMSE 0.02 exceeds --fail-rmse 0.01").
 std::vector<std::string> exceededLimits(const DiffReport& report, const DiffOptions& options);
 
-// Throws UsageError when --heatmap may not be written: standard output (-), one of the images
-// compared (same file, whatever the name), or a regular file not named .png.
-void checkHeatmapPath(const DiffOptions& options);
+// Adds --heatmap to the plan's writes. Throws UsageError for standard output (-) or a regular
+// file not named .png; whether it may replace what is there is checkPlan's.
+void planHeatmap(OutputPlan& plan, const DiffOptions& options);
 
-// The whole command: checks, compares, writes the heat map, prints the report to standard
+// What render --compare reads and writes besides the render (RenderOptions::alongside): the
+// reference, which must be a regular file, and the heat map.
+OutputPlan comparePlan(const DiffOptions& options);
+
+// The whole command: the output plan checked (both images regular files, the heat map none of
+// them, output_plan.h), compares, writes the heat map, prints the report to standard
 // output and each exceeded limit to standard error. Returns 0, or 1 when a limit is exceeded.
 int runDiff(const DiffOptions& options);

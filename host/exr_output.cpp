@@ -178,6 +178,7 @@ struct ExrSink : BandSink {
   }
 
   void commit() override { file.commit(); }
+  void withdraw() override { file.withdraw(); }
 
   OutputSpec spec;
   std::vector<ExrChannel> channels;

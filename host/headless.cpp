@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <memory>
 #include <new>
+#include <optional>
 #include <cmath>
 #include <cstdio>
 
@@ -25,18 +26,29 @@ double lapMs(std::chrono::steady_clock::time_point& start) {
 
 namespace {
 
-// Parses the scene, loads its images and packs it: bad input fails before any Vulkan.
-GpuScene prepareScene(const RenderOptions& options, Scene* scene, HeadlessRender* out) {
-  *scene = parseSceneFile(options.scene, ReadPolicy{options.allowRead});
+// Parses the scene and resolves its job: bad input fails before any Vulkan.
+void parseJob(const RenderOptions& options, Scene* scene, RenderJob* job) {
+  *scene = parseSceneFile(options.scene, readPolicyOf(options));
   printSceneNotes(*scene, stderr);
-  out->job = resolveJob(options, scene->render, 1);
-  checkRenderOutputs(options, out->job, *scene);
+  *job = resolveJob(options, scene->render, 1);
+}
+
+// Loads the scene's images and packs it for the device.
+GpuScene packScene(const RenderOptions& options, const Scene& scene, HeadlessRender* out) {
   PackOptions pack;
   pack.mipmaps = out->job.filter != TextureFilter::Point;
   pack.maxImageMiB = options.maxImageMiB;
-  GpuScene gpuScene = buildGpuScene(*scene, out->job.width, out->job.height, pack);
+  GpuScene gpuScene = buildGpuScene(scene, out->job.width, out->job.height, pack);
   out->imageBytes = imageUploadBytes(gpuScene.images, pack.mipmaps);
   return gpuScene;
+}
+
+// Parses the scene, checks the output plan (nothing is written before), loads its images and
+// packs it.
+GpuScene prepareScene(const RenderOptions& options, Scene* scene, HeadlessRender* out) {
+  parseJob(options, scene, &out->job);
+  checkRenderOutputs(options, out->job, *scene);
+  return packScene(options, *scene, out);
 }
 
 // Whether samples go one dispatch each: where together they would pass lavapipe's loop limit
@@ -190,20 +202,47 @@ void renderOnDevice(Renderer& renderer, const RenderOptions& options, const Scen
   renderPrepared(renderer, scene, gpuScene, extraFrames, out, output, steady, t);
 }
 
-// One scene of a batch on the batch's renderer: parsed, rendered and written.
-void renderBatchItem(Renderer& renderer, const RenderOptions& options, const BatchItem& item) {
-  RenderOptions one = options;
-  one.scene = item.scene;
-  one.scenes = {item.scene};
-  one.output = item.output;
-  HeadlessRender out;
-  out.deviceName = renderer.device.properties.deviceName;
-  std::chrono::steady_clock::time_point t = std::chrono::steady_clock::now();
-  RenderOutput output{one, t, nullptr};
+// One scene of a batch, parsed before anything renders: its options (its own scene and output),
+// scene and job, or the failure its parse gave.
+struct BatchScene {
+  RenderOptions options;
   Scene scene;
-  const GpuScene gpuScene = prepareScene(one, &scene, &out);
-  renderPrepared(renderer, scene, gpuScene, 0, &out, output, false, t);
-  finishOutput(output, &out);
+  HeadlessRender out;
+  std::optional<Error> failure;
+};
+
+// Every scene parsed (a failure kept for its turn), then the plan of the whole batch checked:
+// no image of one scene may replace another's, or any file any scene reads.
+std::vector<BatchScene> prepareBatch(const RenderOptions& options, const std::vector<BatchItem>& items) {
+  std::vector<BatchScene> scenes(items.size());
+  OutputPlan plan;
+  for (size_t i = 0; i < items.size(); ++i) {
+    BatchScene& s = scenes[i];
+    s.options = options;
+    s.options.scene = items[i].scene;
+    s.options.scenes = {items[i].scene};
+    s.options.output = items[i].output;
+    try {
+      parseJob(s.options, &s.scene, &s.out.job);
+      mergePlan(plan, planRender(s.options, s.out.job, s.scene, true));
+    } catch (const Error& e) {
+      s.failure = e;
+      plan.reads.push_back({items[i].scene, "the scene file '" + items[i].scene + "'"});
+    }
+  }
+  checkPlan(plan);
+  return scenes;
+}
+
+// One scene of a batch on the batch's renderer: packed, rendered and written.
+void renderBatchScene(Renderer& renderer, BatchScene& s) {
+  if (s.failure) throw *s.failure;
+  s.out.deviceName = renderer.device.properties.deviceName;
+  std::chrono::steady_clock::time_point t = std::chrono::steady_clock::now();
+  RenderOutput output{s.options, t, nullptr};
+  const GpuScene gpuScene = packScene(s.options, s.scene, &s.out);
+  renderPrepared(renderer, s.scene, gpuScene, 0, &s.out, output, false, t);
+  finishOutput(output, &s.out);
 }
 
 }  // namespace
@@ -230,18 +269,19 @@ void renderHeadless(const RenderOptions& given, uint32_t extraFrames, HeadlessRe
 }
 
 BatchResult renderBatch(const RenderOptions& options, const std::vector<BatchItem>& items) {
+  std::vector<BatchScene> scenes = prepareBatch(options, items);
   Renderer renderer;
   BatchResult result;
   try {
     createRenderer(renderer, {options.device, options.validate});
-    for (const BatchItem& item : items) {
+    for (BatchScene& scene : scenes) {
       try {
-        renderBatchItem(renderer, options, item);
+        renderBatchScene(renderer, scene);
       } catch (const Error& e) {
         fprintf(stderr, "%s\n", errorLine(e).c_str());
         if (result.failed++ == 0) result.firstFailure = e.kind;
       } catch (const std::bad_alloc&) {
-        fprintf(stderr, "raytex: out of memory rendering '%s'\n", item.scene.c_str());
+        fprintf(stderr, "raytex: out of memory rendering '%s'\n", scene.options.scene.c_str());
         if (result.failed++ == 0) result.firstFailure = ErrorKind::OutOfMemory;
       }
     }

@@ -1,5 +1,7 @@
 #include "image_load.h"
 
+#include "input_file.h"
+
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
@@ -17,28 +19,11 @@
 
 namespace {
 
-// Opens an image for reading: a regular file only, so that a FIFO or a device cannot block or
-// stream forever (checked before the open, which does not block, and again on what it opened).
+// Opens an image for reading: a regular file only (input_file.h).
 FILE* openImageFile(const std::string& path, std::string* error) {
-  auto fail = [&](const std::string& why) -> FILE* {
-    *error = "cannot open image '" + path + "': " + why;
-    return nullptr;
-  };
-  struct stat st {};
-  if (stat(path.c_str(), &st) != 0) return fail(strerror(errno));
-  if (!S_ISREG(st.st_mode)) return fail("not a regular file");
-  int fd = open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
-  if (fd < 0) return fail(strerror(errno));
-  if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {  // replaced since the stat
-    close(fd);
-    return fail("not a regular file");
-  }
-  FILE* file = fdopen(fd, "rb");
-  if (!file) {
-    int err = errno;
-    close(fd);
-    return fail(strerror(err));
-  }
+  std::string why;
+  FILE* file = openRegularStream(path, &why);
+  if (!file) *error = "cannot open image '" + path + "': " + why;
   return file;
 }
 

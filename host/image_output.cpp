@@ -112,7 +112,19 @@ void ImageOutput::finish() {
     throw Error(ErrorKind::Internal, "'" + spec_.path + "': row " +
                                          std::to_string(missing - rowWritten_.begin()) + " was never written");
   for (auto& sink : sinks_) sink->complete();
-  for (auto& sink : sinks_) sink->commit();
+  publish();
+}
+
+void ImageOutput::publish() {
+  // The passes first and the image last: a failure on the way removes the files this output put
+  // in place, and an image from an earlier render stays as it was.
+  size_t published = 0;
+  try {
+    for (size_t i = 1; i <= sinks_.size(); ++i, ++published) sinks_[i % sinks_.size()]->commit();
+  } catch (...) {
+    for (size_t i = 1; i <= published; ++i) sinks_[i % sinks_.size()]->withdraw();
+    throw;
+  }
 }
 
 size_t ImageOutput::nonFinite() const { return sinks_.front()->nonFinite(); }

@@ -74,7 +74,9 @@ class ImageOutput {
   // passes[i] rows x width vec4s of spec.passes[i]. Each row once, in any order.
   void writeBand(int firstRow, int rows, const float* rgba, const std::vector<const float*>& passes);
 
-  // Writes what remains and renames every file into place. Every row must have been written.
+  // Writes what remains and puts every file in place, the pass files first and the image last;
+  // when one fails, the files put in place before it are removed. Every row must have been
+  // written.
   void finish();
 
   // Colour values of the main file written as 0 because they were not finite (PNG, with
@@ -85,6 +87,8 @@ class ImageOutput {
   std::vector<std::string> paths() const;
 
  private:
+  void publish();
+
   OutputSpec spec_;
   std::vector<std::unique_ptr<BandSink>> sinks_;
   std::vector<std::string> paths_;

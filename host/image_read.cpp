@@ -4,6 +4,7 @@
 #include "float_input.h"
 #include "image_io.h"
 #include "image_load.h"
+#include "input_file.h"
 
 #include <png.h>
 
@@ -53,9 +54,11 @@ LinearImage readEightBit(const std::string& path, uint64_t maxBytes) {
   return out;
 }
 
-// Whether a PNG file stores 16 bits a channel: byte 24 of the file, IHDR's bit depth.
+// Whether a PNG file stores 16 bits a channel: byte 24 of the file, IHDR's bit depth. A file
+// that cannot be opened as a regular file is not: the 8-bit reader names why.
 bool sixteenBitPng(const std::string& path) {
-  FILE* f = fopen(path.c_str(), "rb");
+  std::string why;
+  FILE* f = openRegularStream(path, &why);
   if (!f) return false;
   unsigned char head[25] = {};
   const bool full = fread(head, 1, sizeof head, f) == sizeof head;
@@ -72,6 +75,10 @@ struct Png16Errors {
   png_longjmp(png, 1);
 }
 
+// Warnings (about ancillary chunks, which raytex does not use) are dropped, as for 8-bit images
+// (image_load.cpp): libpng prints nothing, and errors reach the user as the one line of the refusal.
+void png16Warn(png_structp, png_const_charp) {}
+
 void png16Read(png_structp png, png_bytep data, size_t length) {
   if (fread(data, 1, length, static_cast<FILE*>(png_get_io_ptr(png))) != length) png_error(png, "the file ends early");
 }
@@ -79,7 +86,7 @@ void png16Read(png_structp png, png_bytep data, size_t length) {
 // Decodes a 16-bit PNG (probed by probeImage) into `rgb16`: RGB as stored, host byte order.
 void decodePng16(const std::string& path, FILE* file, const ImageHeader& header, std::vector<uint16_t>& rgb16) {
   Png16Errors errors;
-  png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &errors, png16Fail, nullptr);
+  png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &errors, png16Fail, png16Warn);
   png_infop info = png ? png_create_info_struct(png) : nullptr;
   if (!info) {
     png_destroy_read_struct(&png, nullptr, nullptr);
@@ -114,8 +121,9 @@ void decodePng16(const std::string& path, FILE* file, const ImageHeader& header,
 LinearImage readSixteenBit(const std::string& path, uint64_t maxBytes) {
   const ImageHeader header = probeImage(path);
   checkBudget(path, header.width, header.height, maxBytes);
-  FILE* file = fopen(path.c_str(), "rb");
-  if (!file) throw ImageInputError("cannot open image '" + path + "'");
+  std::string why;
+  FILE* file = openRegularStream(path, &why);
+  if (!file) throw ImageInputError("cannot open image '" + path + "': " + why);
   std::vector<uint16_t> rgb16;
   try {
     decodePng16(path, file, header, rgb16);

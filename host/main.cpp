@@ -20,6 +20,7 @@
 #include <new>
 #include <system_error>
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 namespace {
@@ -47,7 +48,7 @@ int failureCode(ErrorKind kind, bool diff) { return diff ? 2 : exitCode(kind); }
 // The float64 CPU reference: no Vulkan at all.
 void runReference(const RenderOptions& options) {
   Clock::time_point start = Clock::now(), t = start;
-  Scene scene = parseSceneFile(options.scene, ReadPolicy{options.allowRead});
+  Scene scene = parseSceneFile(options.scene, readPolicyOf(options));
   printSceneNotes(scene, stderr);
   const RenderJob job = resolveJob(options, scene.render, 1);
   checkRenderOutputs(options, job, scene);
@@ -76,6 +77,17 @@ void runBatch(const RenderOptions& options) {
   if (result.failed > 0)
     throw Error(result.firstFailure, std::to_string(result.failed) + " of " + std::to_string(options.scenes.size()) +
                                          " scenes failed");
+}
+
+// render --compare: the render's options with the reference and the heat map in its output
+// plan, checked before anything renders. The output is read back, so it is a regular file.
+RenderOptions withComparison(const RenderOptions& given, const DiffOptions& diff) {
+  RenderOptions options = given;
+  struct stat st;
+  if (stat(options.output.c_str(), &st) == 0 && !S_ISREG(st.st_mode) && !S_ISDIR(st.st_mode))
+    throw UsageError("--compare reads the output back: '" + options.output + "' is not a regular file");
+  options.alongside = comparePlan(diff);
+  return options;
 }
 
 // render --compare: the output file against the reference, as raytex diff reports it; a limit
@@ -112,9 +124,9 @@ int runCommand(const CliArgs& cli) {
     case CliCommand::Version: puts(kRaytexVersion); break;
     case CliCommand::Devices: fputs(listDevices().c_str(), stdout); break;
     case CliCommand::Render:
-      runRender(cli.render);
-      if (!cli.diff.reference.empty()) return compareOutput(cli.render, cli.diff);
-      break;
+      if (cli.diff.reference.empty()) return runRender(cli.render), 0;
+      runRender(withComparison(cli.render, cli.diff));
+      return compareOutput(cli.render, cli.diff);
     case CliCommand::View: runViewer(cli.render); break;
     case CliCommand::Bench: runBench(cli.render, cli.bench); break;
     case CliCommand::Diff: return runDiff(cli.diff);

@@ -1,5 +1,7 @@
 #include "output_file.h"
 
+#include "output_plan.h"
+
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
@@ -12,6 +14,7 @@
 #include <fcntl.h>
 #include <limits.h>
 #include <pthread.h>
+#include <sys/random.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -33,15 +36,20 @@ extern "C" void removeTempsAndReraise(int sig) {
   raise(sig);  // SA_RESETHAND restored the default action: the exit status is the signal's
 }
 
-constexpr int kCleanupSignals[] = {SIGINT, SIGTERM, SIGHUP};
+// Every signal whose default action ends the process, SIGKILL and SIGSTOP aside (they cannot be
+// caught) and SIGXFSZ aside (ignored, below).
+constexpr int kCleanupSignals[] = {SIGINT,  SIGTERM, SIGHUP,  SIGQUIT, SIGALRM,   SIGUSR1, SIGUSR2,
+                                   SIGPIPE, SIGXCPU, SIGVTALRM, SIGPROF, SIGPOLL, SIGSYS,  SIGTRAP,
+                                   SIGABRT, SIGBUS,  SIGFPE,  SIGILL,  SIGSEGV};
+constexpr int kCleanupCount = int(sizeof kCleanupSignals / sizeof kCleanupSignals[0]);
 
-// While any output is open: SIGINT, SIGTERM and SIGHUP remove the registered temporary files
-// (unless the process ignores them, as `nohup` and background jobs do), and SIGXFSZ is ignored
-// so that a file size limit is a write error. The first output open installs these actions;
-// when the last one closes, the previous actions come back.
+// While any output is open: every signal that would end the process removes the registered
+// temporary files first (a signal the process ignores, as `nohup` ignores SIGHUP, stays
+// ignored), and SIGXFSZ is ignored so that a file size limit is a write error. The first output
+// open installs these actions; when the last one closes, the previous actions come back.
 struct SignalState {
   int holders = 0;
-  struct sigaction previous[3] = {}, previousXfsz = {};
+  struct sigaction previous[kCleanupCount] = {}, previousXfsz = {};
 };
 SignalState gSignals;
 
@@ -51,7 +59,7 @@ void holdSignals() {
   cleanup.sa_handler = removeTempsAndReraise;
   cleanup.sa_flags = SA_RESETHAND;
   sigemptyset(&cleanup.sa_mask);
-  for (int i = 0; i < 3; ++i) {
+  for (int i = 0; i < kCleanupCount; ++i) {
     sigaction(kCleanupSignals[i], nullptr, &gSignals.previous[i]);
     if (gSignals.previous[i].sa_handler != SIG_IGN) sigaction(kCleanupSignals[i], &cleanup, nullptr);
   }
@@ -62,18 +70,17 @@ void holdSignals() {
 
 void releaseSignals() {
   if (--gSignals.holders > 0) return;
-  for (int i = 0; i < 3; ++i) sigaction(kCleanupSignals[i], &gSignals.previous[i], nullptr);
+  for (int i = 0; i < kCleanupCount; ++i) sigaction(kCleanupSignals[i], &gSignals.previous[i], nullptr);
   sigaction(SIGXFSZ, &gSignals.previousXfsz, nullptr);
 }
 
-// Runs `step` with the cleanup signals held back, so that the handler never sees a half-done
-// registration.
+// Runs `step` with every signal that can be held back held back, so that a handler never sees a
+// half-done registration and no signal ends the process between naming a file and renaming it.
 template <typename F>
 void withSignalsBlocked(F step) {
-  sigset_t cleanupSet, old;
-  sigemptyset(&cleanupSet);
-  for (int sig : kCleanupSignals) sigaddset(&cleanupSet, sig);
-  pthread_sigmask(SIG_BLOCK, &cleanupSet, &old);
+  sigset_t all, old;
+  sigfillset(&all);
+  pthread_sigmask(SIG_BLOCK, &all, &old);
   step();
   pthread_sigmask(SIG_SETMASK, &old, nullptr);
 }
@@ -106,25 +113,6 @@ bool writeAll(int fd, const uint8_t* data, size_t size, int64_t offset) {
   return true;
 }
 
-// `path` with its symbolic links followed to the file they name (which may not exist yet).
-std::string followLinks(const std::string& path) {
-  std::string p = path;
-  for (int depth = 0; depth < 40; ++depth) {
-    struct stat st;
-    if (lstat(p.c_str(), &st) != 0 || !S_ISLNK(st.st_mode)) return p;
-    std::string target(size_t(st.st_size > 0 ? st.st_size : PATH_MAX), '\0');
-    ssize_t n = readlink(p.c_str(), target.data(), target.size());
-    if (n <= 0) return p;
-    target.resize(size_t(n));
-    size_t slash = p.rfind('/');
-    std::string next = target[0] == '/' || slash == std::string::npos ? target : p.substr(0, slash + 1) + target;
-    // A link only the kernel can follow (/proc/self/fd/1 -> "pipe:[N]", as /dev/stdout is): kept.
-    if (lstat(next.c_str(), &st) != 0 && stat(p.c_str(), &st) == 0) return p;
-    p = next;
-  }
-  return p;  // a loop: the open or rename reports ELOOP
-}
-
 // A device, FIFO or other non-regular file: written in place. A FIFO is opened without
 // blocking, so that one with no reader is an error (ENXIO) rather than a wait.
 int openThrough(const std::string& path, const std::string& target) {
@@ -137,14 +125,39 @@ int openThrough(const std::string& path, const std::string& target) {
   return fd;
 }
 
-// A regular file, new or existing: the temporary file beside it, registered for the signal
-// handler in `*slot`. An existing file's mode is the temporary's (mkstemp creates 0600); a new
-// one gets the usual 0666 & ~umask.
-int openTemp(const std::string& path, const std::string& target, const struct stat* existing, std::string* tmp,
-             int* slot) {
+// The directory a regular output's file is made in: the target's.
+std::string directoryOf(const std::string& target) {
   size_t slash = target.rfind('/');
-  std::string dir = slash == std::string::npos ? "." : target.substr(0, slash + 1);
-  long nameMax = pathconf(dir.c_str(), _PC_NAME_MAX);
+  return slash == std::string::npos ? "." : target.substr(0, slash + 1);
+}
+
+// An existing file's mode is kept; a new one gets the usual 0666 & ~umask.
+void setMode(int fd, const struct stat* existing) {
+  mode_t mask = umask(0);
+  umask(mask);
+  fchmod(fd, existing ? existing->st_mode & 07777 : 0666 & ~mask);
+}
+
+// A file with no name in the target's directory (O_TMPFILE), named only at commit: no signal,
+// not even SIGKILL, can leave it behind. -1 where the file system refuses O_TMPFILE or
+// /proc/self/fd, which commit links it through, is missing; then the named temporary serves.
+// RAYTEX_TEST_NAMED_TEMP=1 makes every output take the named temporary (for its tests).
+int openUnnamed(const std::string& target) {
+  if (getenv("RAYTEX_TEST_NAMED_TEMP")) return -1;
+  int fd = open(directoryOf(target).c_str(), O_TMPFILE | O_RDWR | O_CLOEXEC, 0600);
+  if (fd < 0) return -1;
+  char link[64];
+  snprintf(link, sizeof link, "/proc/self/fd/%d", fd);
+  if (access(link, F_OK) != 0) {
+    close(fd);
+    return -1;
+  }
+  return fd;
+}
+
+// The named temporary file beside the target, registered for the signal handler in `*slot`.
+int openNamedTemp(const std::string& path, const std::string& target, std::string* tmp, int* slot) {
+  long nameMax = pathconf(directoryOf(target).c_str(), _PC_NAME_MAX);
   *tmp = tempTemplate(target, nameMax > 0 ? size_t(nameMax) : 255);
   if (tmp->size() >= PATH_MAX) fail(path, ENAMETOOLONG);
   int fd = -1, err = 0;
@@ -159,10 +172,32 @@ int openTemp(const std::string& path, const std::string& target, const struct st
     *slot = i;
   });
   if (fd < 0) fail(path, err);
-  mode_t mask = umask(0);
-  umask(mask);
-  fchmod(fd, existing ? existing->st_mode & 07777 : 0666 & ~mask);
   return fd;
+}
+
+// Gives the unnamed file `fd` the target's name: linked under a fresh temporary name beside
+// it, then renamed over the target, with every signal held back in between. 0, or the errno.
+int publishUnnamed(int fd, const std::string& target) {
+  char from[64];
+  snprintf(from, sizeof from, "/proc/self/fd/%d", fd);
+  long nameMax = pathconf(directoryOf(target).c_str(), _PC_NAME_MAX);
+  std::string name = tempTemplate(target, nameMax > 0 ? size_t(nameMax) : 255);
+  int err = EEXIST;
+  withSignalsBlocked([&] {
+    for (int attempt = 0; attempt < 100 && err == EEXIST; ++attempt) {
+      uint8_t random[6] = {};
+      if (getrandom(random, sizeof random, 0) != sizeof random) random[0] = uint8_t(attempt);
+      static const char digits[] = "abcdefghijklmnopqrstuvwxyz0123456789";
+      for (size_t i = 0; i < 6; ++i) name[name.size() - 6 + i] = digits[random[i] % 36];
+      err = linkat(AT_FDCWD, from, AT_FDCWD, name.c_str(), AT_SYMLINK_FOLLOW) == 0 ? 0 : errno;
+    }
+    if (err != 0) return;
+    if (rename(name.c_str(), target.c_str()) != 0) {
+      err = errno;
+      unlink(name.c_str());
+    }
+  });
+  return err;
 }
 
 }  // namespace
@@ -172,16 +207,24 @@ OutputFile::OutputFile(const std::string& path) : path_(path) {
     kind_ = Kind::Stdout;
     return;
   }
-  target_ = followLinks(path);
+  target_ = writeTarget(path);
   struct stat st;
   const bool exists = stat(target_.c_str(), &st) == 0;
   if (exists && S_ISDIR(st.st_mode)) fail(path, EISDIR);
-  kind_ = exists && !S_ISREG(st.st_mode) ? Kind::Through : Kind::Replace;
+  kind_ = exists && !S_ISREG(st.st_mode) ? Kind::Through : Kind::Unnamed;
   holdSignals();
   signalsHeld_ = true;
   try {
-    fd_ = kind_ == Kind::Through ? openThrough(path, target_)
-                                 : openTemp(path, target_, exists ? &st : nullptr, &temp_, &slot_);
+    if (kind_ == Kind::Through) {
+      fd_ = openThrough(path, target_);
+      return;
+    }
+    fd_ = openUnnamed(target_);
+    if (fd_ < 0) {
+      kind_ = Kind::Replace;
+      fd_ = openNamedTemp(path, target_, &temp_, &slot_);
+    }
+    setMode(fd_, exists ? &st : nullptr);
   } catch (...) {
     releaseSignals();
     throw;
@@ -219,6 +262,10 @@ void OutputFile::commit() {
     committed_ = true;
     return;
   }
+  if (kind_ == Kind::Unnamed) {
+    if (int err = publishUnnamed(fd_, target_)) fail(path_, err);  // the destructor closes the file
+    published_ = true;
+  }
   const int fd = fd_;
   fd_ = -1;
   if (close(fd) != 0) fail(path_, errno);  // the destructor removes the temporary
@@ -226,10 +273,16 @@ void OutputFile::commit() {
     if (rename(temp_.c_str(), target_.c_str()) != 0) fail(path_, errno);
     withSignalsBlocked([&] { gTempRegistered[slot_] = 0; });
     slot_ = -1;
+    published_ = true;
   }
   releaseSignals();
   signalsHeld_ = false;
   committed_ = true;
+}
+
+void OutputFile::withdraw() {
+  if (published_) unlink(target_.c_str());
+  published_ = false;
 }
 
 std::string tempTemplate(const std::string& path, size_t nameMax) {
@@ -269,27 +322,4 @@ OutputFormat outputFormatFor(const std::string& path) {
   if (path == "-" || (stat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode) && !S_ISDIR(st.st_mode)))
     return OutputFormat::Png;  // written through whatever its name
   throw UsageError("'" + path + "': unknown output format (supported: .png, .exr, .pfm)");
-}
-
-void checkOutput(const std::string& output, const Scene& scene) {
-  if (output.empty() || output == "-") return;
-  if (std::string clash = outputClash(output, scene); !clash.empty()) throw UsageError(clash);
-  outputFormatFor(output);
-}
-
-std::string outputClash(const std::string& output, const Scene& scene) {
-  struct stat out;
-  if (output.empty() || stat(output.c_str(), &out) != 0) return "";  // a new file clashes with nothing
-  auto same = [&](const std::string& input) {
-    struct stat in;
-    return stat(input.c_str(), &in) == 0 && in.st_dev == out.st_dev && in.st_ino == out.st_ino;
-  };
-  std::string what;
-  if (same(scene.path)) what = "the scene file";
-  for (size_t i = 0; what.empty() && i < scene.files.size(); ++i)
-    if (same(scene.files[i])) what = i == 0 ? "the scene file" : "a file the scene includes";
-  for (const Material& m : scene.materials)
-    if (what.empty() && m.texture.kind == TextureKind::Image && same(m.texture.imagePath))
-      what = "an image the scene uses";
-  return what.empty() ? "" : "refusing to write '" + output + "': it is " + what;
 }

@@ -1,19 +1,23 @@
 // Output files: how raytex writes an image without ever destroying what is there. No Vulkan.
 //
-// - A new or existing regular file is written through a temporary file beside it and a rename
-//   at commit: the path is either the complete new file or untouched. An existing file keeps
-//   its mode; a new one gets 0666 & ~umask. The temporary name fits the directory's name limit.
+// - A new or existing regular file is written into a file with no name in its directory
+//   (O_TMPFILE), which commit links beside it and renames over it: the path is either the
+//   complete new file or untouched, and no signal leaves anything behind. Where the file system
+//   refuses O_TMPFILE, a named temporary file beside it serves (its name fits the directory's
+//   name limit). An existing file keeps its mode; a new one gets 0666 & ~umask.
 // - A symbolic link is followed: the rename replaces its target, and the link stays.
 // - An existing non-regular file (a device such as /dev/null, a FIFO) is written through
 //   directly, as other tools do; that write is not atomic. A FIFO with no reader is an error,
 //   not a wait. "-" is standard output.
-// - While a temporary file exists, SIGINT, SIGTERM and SIGHUP remove it (every open one), then
-//   end the process with the signal's default action; while any output is open, SIGXFSZ is
-//   ignored so that a file size limit becomes a write error.
+// - While a named temporary file exists, every signal that would end the process (SIGINT,
+//   SIGTERM, SIGHUP, SIGQUIT, SIGPIPE, SIGALRM, SIGUSR1, ...) removes it (every open one), then
+//   ends the process with the signal's default action; while any output is open, SIGXFSZ is
+//   ignored so that a file size limit becomes a write error. What the command writes and
+//   whether it may is the output plan's (output_plan.h), checked before any output opens.
 #pragma once
 
+#include "error.h"
 #include "image_io.h"
-#include "scene.h"
 
 #include <cstdint>
 #include <string>
@@ -40,17 +44,21 @@ class OutputFile {
 
   const std::string& path() const { return path_; }
   // A regular file (through its temporary): writeAt may place bytes anywhere.
-  bool seekable() const { return kind_ == Kind::Replace; }
+  bool seekable() const { return kind_ == Kind::Unnamed || kind_ == Kind::Replace; }
   // Appends `size` bytes after what write() wrote before.
   void write(const uint8_t* data, size_t size);
   void write(const std::vector<uint8_t>& bytes) { write(bytes.data(), bytes.size()); }
   // Writes `size` bytes at `offset` (seekable outputs only), growing the file as needed.
   void writeAt(uint64_t offset, const uint8_t* data, size_t size);
-  // Closes the output and, for a regular file, renames the temporary onto the path.
+  // Closes the output and, for a regular file, gives the temporary the path's name.
   void commit();
+  // Removes the file commit() put in place (a set of files whose later member failed); an
+  // output written through, or not yet committed, is left as it is.
+  void withdraw();
 
  private:
-  enum class Kind { Replace, Through, Stdout };
+  // Unnamed: an O_TMPFILE file; Replace: a named temporary; Through: a device or FIFO.
+  enum class Kind { Unnamed, Replace, Through, Stdout };
   std::string path_;
   std::string target_;  // the path with its links followed
   std::string temp_;    // Replace: the temporary file
@@ -59,6 +67,7 @@ class OutputFile {
   int slot_ = -1;  // Replace: the temporary's place among those signals remove
   bool signalsHeld_ = false;
   bool committed_ = false;
+  bool published_ = false;  // commit() put the file at the path
 };
 
 // Writes `bytes` to `path` through an OutputFile. Throws IoError naming the path.
@@ -73,13 +82,3 @@ void writePngAtomic(const std::string& path, const ImageRGBA8& image);
 // The name of the temporary file for `path`: "NAME.tmp-XXXXXX" in the same directory, with
 // NAME's bytes cut (at a UTF-8 boundary) so that the name has at most `nameMax` bytes.
 std::string tempTemplate(const std::string& path, size_t nameMax);
-
-// Empty when writing `output` cannot overwrite the scene's own inputs; else the one-line reason
-// ("refusing to write 'x.cfg': it is the scene file"). Compares device and inode with the scene
-// file, every included file and every image the scene's materials name.
-std::string outputClash(const std::string& output, const Scene& scene);
-
-// Throws UsageError when raytex may not write `output` for this scene: one of its files
-// (outputClash), or a file of no output format (outputFormatFor). Devices, FIFOs, "-"
-// (standard output) and "" (no output) pass.
-void checkOutput(const std::string& output, const Scene& scene);

@@ -4,6 +4,7 @@
 #include "parser.h"
 #include "suggest.h"
 
+#include "input_file.h"
 #include "read_policy.h"
 #include "scene_limits.h"
 #include "texture_kinds.h"
@@ -30,8 +31,6 @@ using cfg::quote;
 
 namespace {
 
-constexpr size_t kMaxIncludeDepth = 16;
-
 [[noreturn]] void fail(const FileLoc& loc, const std::string& message) { throw SceneError(loc, message); }
 
 std::string locString(const FileLoc& loc) {
@@ -53,6 +52,8 @@ struct OpenFile {
 
 struct State {
   ReadPolicy policy;
+  uint64_t bytesRead = 0;  // by every file of the scene, against policy.maxSceneBytes
+  size_t includes = 0;     // #include directives followed
   Scene scene;
   std::map<std::string, int> materialIndex;
   std::vector<OpenFile> includeStack;
@@ -132,6 +133,30 @@ std::string includeHint(const std::string& name, const std::string& path, const 
     hint += "; the course's materials are scenes/texture_include.cfg in raytex's source tree: copy it beside "
             "the scene or #include its path";
   return hint;
+}
+
+// What readSceneText returns for a file that is missing, unreadable or not a regular file.
+const char* const kCannotOpen = "cannot open";
+
+// Reads the scene file or include `path` whole into `*text`, counting its bytes against what the
+// policy lets one scene read: "" when read, kCannotOpen, or the message of a file too large or a
+// read that failed.
+std::string readSceneText(State& st, const std::string& path, std::string* text) {
+  const uint64_t left = st.policy.maxSceneBytes - std::min(st.bytesRead, st.policy.maxSceneBytes);
+  std::string why;
+  uint64_t size = 0;
+  switch (readWholeFile(path, left, text, &why, &size)) {
+    case ReadStatus::Read: break;
+    case ReadStatus::CannotOpen: return kCannotOpen;
+    case ReadStatus::ReadFailed: return "cannot read '" + path + "': " + why;
+    case ReadStatus::TooLarge: {
+      const uint64_t mib = st.policy.maxSceneBytes >> 20;
+      return "'" + path + "' (" + std::to_string(size) + " bytes) would bring the scene's files over " +
+             std::to_string(mib) + " MiB, the most a scene may read (--max-scene-mib N)";
+    }
+  }
+  st.bytesRead += text->size();
+  return "";
 }
 
 // Words that cannot name a material (they would read as keys or blocks).
@@ -340,6 +365,7 @@ class Parser {
   }
 
   void parseSphere(const Token& kw) {
+    checkRoomFor(st_.scene.spheres.size(), MAX_SPHERES, "spheres", kw.loc);
     Sphere s;
     s.loc = kw.loc;
     Seen seen;
@@ -363,6 +389,7 @@ class Parser {
   }
 
   void parsePlane(const Token& kw) {
+    checkRoomFor(st_.scene.planes.size(), MAX_PLANES, "planes", kw.loc);
     Plane p;
     p.loc = kw.loc;
     Seen seen;
@@ -396,6 +423,7 @@ class Parser {
   }
 
   void parseMaterial() {
+    checkRoomFor(st_.scene.materials.size(), kMaxMaterialDefinitions, "materials", peek().loc);
     Token name = expect(Tok::Ident, "a material name after 'material'");
     if (isReserved(name.text)) fail(name.loc, quote(name.text) + " is a reserved word and cannot name a material");
     auto it = st_.materialIndex.find(name.text);
@@ -569,6 +597,7 @@ class Parser {
   }
 
   void parseLight(const Token& kw) {
+    checkRoomFor(st_.scene.lights.size(), MAX_LIGHTS, "lights", kw.loc);
     Light l;
     l.loc = kw.loc;
     Seen seen;
@@ -617,8 +646,13 @@ class Parser {
       for (size_t j = i; j < st_.includeStack.size(); ++j) chain += st_.includeStack[j].name + " -> ";
       fail(directive.loc, "cyclic #include of '" + path + "' (" + chain + path + ")");
     }
+    if (++st_.includes > kMaxIncludes)
+      fail(directive.loc, "more than " + std::to_string(kMaxIncludes) + " #include directives in one scene");
     std::string text;
-    if (!readTextFile(path, &text)) fail(directive.loc, "cannot open included file '" + path + "'" + includeHint(name.text, path, file_));
+    const std::string error = readSceneText(st_, path, &text);
+    if (error == kCannotOpen)
+      fail(directive.loc, "cannot open included file '" + path + "'" + includeHint(name.text, path, file_));
+    if (!error.empty()) fail(directive.loc, error);
     if (!isSceneText(text, path)) fail(directive.loc, "'" + path + "' is not a scene file");
     st_.scene.files.push_back(path);
     parseText(st_, text, path);
@@ -637,33 +671,31 @@ void parseText(State& st, const std::string& text, const std::string& file) {
   st.includeStack.pop_back();
 }
 
-}  // namespace
-
-Scene parseSceneText(const std::string& text, const std::string& fileName, const ReadPolicy& policy) {
-  State st;
-  st.policy = policy;
+// Parses `text` as the file `fileName`, the top of a scene.
+Scene parseTop(State& st, const std::string& text, const std::string& fileName) {
   st.scene.path = fileName;
   parseText(st, text, fileName);
   return std::move(st.scene);
 }
 
-bool readTextFile(const std::string& path, std::string* out) {
-  std::error_code ec;
-  if (!fs::is_regular_file(path, ec)) return false;
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return false;
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  *out = ss.str();
-  return !in.bad();
+}  // namespace
+
+Scene parseSceneText(const std::string& text, const std::string& fileName, const ReadPolicy& policy) {
+  State st;
+  st.policy = policy;
+  return parseTop(st, text, fileName);
 }
 
 Scene parseSceneFile(const std::string& path, const ReadPolicy& policy) {
+  State st;
+  st.policy = policy;
   std::string text;
-  if (!readTextFile(path, &text)) throw SceneError(FileLoc{path, 0, 0}, "cannot open scene file '" + path + "'");
+  const std::string error = readSceneText(st, path, &text);
+  if (error == kCannotOpen) throw SceneError(FileLoc{path, 0, 0}, "cannot open scene file '" + path + "'");
+  if (!error.empty()) throw SceneError(FileLoc{path, 1, 1}, error);
   // The path may come from an untrusted caller too: a file that is not a scene is not quoted.
   if (!isSceneText(text, path)) throw SceneError(FileLoc{path, 1, 1}, "'" + path + "' is not a scene file");
-  Scene scene = parseSceneText(text, path, policy);
+  Scene scene = parseTop(st, text, path);
   // A file with no object would render the background alone: an empty file, or a material
   // library given by mistake, not an image anyone wants.
   if (scene.spheres.empty() && scene.planes.empty())

@@ -7,15 +7,14 @@
 
 #include <string>
 
-// The whole of a regular file as text; false if it cannot be read.
-bool readTextFile(const std::string& path, std::string* out);
-
 // Reads and parses a scene file; #include paths resolve relative to the including file. A
 // scene with no sphere or plane is an error (FILE:1:1): it would render the background alone.
 // A file is a scene when it is empty or comment-only, or its first token is #include, a
 // top-level keyword or within edit distance 2 of one; any other file, named here or included,
 // is refused as "not a scene file" with nothing of its content quoted. Includes and images
-// must satisfy `policy` (the file named here is always read).
+// must satisfy `policy` (the file named here is always read), and all files read together hold
+// at most policy.maxSceneBytes, in at most kMaxIncludes includes (read_policy.h); a scene over a
+// count limit stops at its first item over it (scene_limits.h, checkRoomFor).
 Scene parseSceneFile(const std::string& path, const ReadPolicy& policy = ReadPolicy{});
 
 // Parses scene text as if it were the file `fileName` (used for error locations and

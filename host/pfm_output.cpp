@@ -63,6 +63,7 @@ struct PfmSink : BandSink {
   }
 
   void commit() override { file.commit(); }
+  void withdraw() override { file.withdraw(); }
 
   OutputFile file;
   int width, height, source, channels;

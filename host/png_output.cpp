@@ -111,6 +111,7 @@ struct PngSink : BandSink {
   }
 
   void commit() override { file.commit(); }
+  void withdraw() override { file.withdraw(); }
   size_t nonFinite() const override { return badValues; }
 
   // The band's plane as RGBA: as it is for three channels, else spread into `scratch`.

@@ -32,11 +32,38 @@ OutputSpec renderOutputSpec(const RenderOptions& options, const RenderJob& job, 
   return spec;
 }
 
-void checkRenderOutputs(const RenderOptions& options, const RenderJob& job, const Scene& scene) {
-  checkOutput(options.output, scene);
-  const OutputSpec spec = renderOutputSpec(options, job, {});
-  for (Pass pass : spec.passes) {
-    const std::string path = passFilePath(spec, pass);
-    if (!path.empty()) checkOutput(path, scene);
+namespace {
+
+bool knownFormat(const std::string& path) {
+  try {
+    outputFormatFor(path);
+    return true;
+  } catch (const UsageError&) {
+    return false;
   }
+}
+
+}  // namespace
+
+OutputPlan planRender(const RenderOptions& options, const RenderJob& job, const Scene& scene, bool batch) {
+  OutputPlan plan;
+  const std::string of = batch ? " of '" + scene.path + "'" : "";
+  if (!options.output.empty()) plan.writes.push_back({options.output, "the image" + of, !batch, ""});
+  // An unknown extension has no pass files; it is refused after the plan's check (checkRenderOutputs).
+  if (!options.output.empty() && knownFormat(options.output)) {
+    const OutputSpec spec = renderOutputSpec(options, job, {});
+    for (Pass pass : spec.passes) {
+      const std::string path = passFilePath(spec, pass);
+      if (!path.empty())
+        plan.writes.push_back({path, "the " + std::string(passInfo(pass).name) + " pass" + of, false, options.output});
+    }
+  }
+  planSceneReads(plan, scene, batch ? "the scene '" + scene.path + "'" : "the scene");
+  mergePlan(plan, options.alongside);
+  return plan;
+}
+
+void checkRenderOutputs(const RenderOptions& options, const RenderJob& job, const Scene& scene) {
+  checkPlan(planRender(options, job, scene, false));
+  if (!options.output.empty()) outputFormatFor(options.output);  // an unknown extension
 }

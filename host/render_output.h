@@ -4,6 +4,7 @@
 
 #include "cli.h"
 #include "image_output.h"
+#include "output_plan.h"
 #include "scene.h"
 
 #include <string>
@@ -26,6 +27,13 @@ Metadata renderMetadata(const RenderOptions& options, const RenderJob& job, cons
 // outputFormatFor), --depth, --half and --aov.
 OutputSpec renderOutputSpec(const RenderOptions& options, const RenderJob& job, const Metadata& metadata);
 
-// Throws UsageError when the output or a pass file beside it may not be written for this scene
-// (checkOutput: one of the scene's own files, then an unknown format).
+// The output plan of one render (output_plan.h): the image -o names and every pass file beside
+// it, the scene's files and images, and options.alongside (render --compare's reference and heat
+// map). In a `batch` the messages name the scene ("the image of 'a.cfg'"), and the images are not
+// named on the command line: one that exists as a device or FIFO is refused. An output of no
+// known format is planned without pass files (its refusal is checkRenderOutputs').
+OutputPlan planRender(const RenderOptions& options, const RenderJob& job, const Scene& scene, bool batch);
+
+// Checks the plan of one render (checkPlan(planRender(...))), then the output's format
+// (outputFormatFor), before any work: throws UsageError or IoError, and nothing is written.
 void checkRenderOutputs(const RenderOptions& options, const RenderJob& job, const Scene& scene);

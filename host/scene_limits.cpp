@@ -4,6 +4,7 @@
 #include "gpu_tree.h"
 
 #include <algorithm>
+#include <cstring>
 #include <string>
 #include <vector>
 
@@ -20,12 +21,17 @@ FileLoc firstUse(const Scene& scene, int material) {
 
 template <typename Items>
 void checkCount(const Items& items, size_t max, const char* what) {
-  if (items.size() > max)
-    throw SceneError(items[max].loc, "the scene has " + std::to_string(items.size()) + " " + what +
-                                         "; raytex renders at most " + std::to_string(max));
+  if (items.size() > max) checkRoomFor(max, max, what, items[max].loc);
 }
 
 }  // namespace
+
+void checkRoomFor(size_t count, size_t max, const char* what, const FileLoc& loc) {
+  if (count < max) return;
+  const std::string singular(what, strlen(what) - 1);  // "spheres" -> "sphere"
+  throw SceneError(loc, singular + " " + std::to_string(count + 1) + " is over the limit: raytex renders at most " +
+                            std::to_string(max) + " " + what);
+}
 
 void checkSceneLimits(const Scene& scene) {
   checkCount(scene.spheres, MAX_SPHERES, "spheres");

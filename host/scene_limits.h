@@ -7,9 +7,19 @@
 
 #include <cstdint>
 
-// Throws SceneError (at the first object, light or use over) when the scene has more spheres,
-// planes or lights than MAX_SPHERES, MAX_PLANES, MAX_LIGHTS (shaders/common.h), or its objects
-// use more than MAX_MATERIALS materials.
+// Materials a scene may define (its objects may use MAX_MATERIALS of them).
+constexpr size_t kMaxMaterialDefinitions = 65536;
+
+// Throws SceneError at `loc` when a scene that holds `count` of `what` ("spheres") already, of
+// which raytex renders at most `max`, would take one more: "sphere 131073 is over the limit:
+// raytex renders at most 131072 spheres". The parser asks before it adds each sphere, plane,
+// light and material, so that a scene over a limit stops at its first item over it, before the
+// rest is parsed.
+void checkRoomFor(size_t count, size_t max, const char* what, const FileLoc& loc);
+
+// Throws SceneError (at the first object, light or use over, as checkRoomFor words it) when the
+// scene has more spheres, planes or lights than MAX_SPHERES, MAX_PLANES, MAX_LIGHTS
+// (shaders/common.h), or its objects use more than MAX_MATERIALS materials.
 void checkSceneLimits(const Scene& scene);
 
 // Lavapipe ends a kernel's loops after 65535 passes (its guard against endless loops): the rest

@@ -363,13 +363,18 @@ void reloadIfChanged(ViewerState& state, const std::string& path, const ReadPoli
 constexpr uint32_t kViewerSamplesPerPixel = 64;
 
 // F12: the image on screen, every sample in, written to options.output (the file raytex render
-// writes for this view, its format and metadata included). An output that is one of the scene's
-// files now (a reload may have added it) or a failed write is one line on stderr and in the
-// title; the viewer goes on.
+// writes for this view, its format and metadata included). The output plan is checked again
+// (a reload may have made the output one of the scene's files); a refusal or a failed write is
+// one line on stderr and in the title; the viewer goes on.
 void saveScreenshot(ViewerState& state, Renderer& renderer, const RenderOptions& options, const RenderJob& job,
                     const char* settings) {
   const std::string& output = options.output;
-  std::string error = outputClash(output, state.scene);
+  std::string error;
+  try {
+    checkRenderOutputs(options, job, state.scene);
+  } catch (const Error& e) {
+    error = e.what();
+  }
   if (error.empty()) {
     readbackFrame(renderer);
     try {
@@ -552,10 +557,10 @@ struct Viewer {
 // The scene, the job and how to pack it: bad input fails before any window opens.
 void loadScene(Viewer& v, const RenderOptions& options) {
   ViewerState& state = v.state;
-  state.scene = parseSceneFile(options.scene, ReadPolicy{options.allowRead});
+  state.scene = parseSceneFile(options.scene, readPolicyOf(options));
   printSceneNotes(state.scene, stderr);
-  checkOutput(options.output, state.scene);  // F12 writes -o
   v.job = resolveJob(options, state.scene.render, kViewerSamplesPerPixel);
+  checkRenderOutputs(options, v.job, state.scene);  // F12 writes -o
   v.target = v.job.samplesPerSide * v.job.samplesPerSide;
   v.pack.mipmaps = v.job.filter != TextureFilter::Point;  // mip chains only for the filtered kernel
   v.pack.allMaterials = true;
@@ -762,7 +767,7 @@ void pollAndTitle(Viewer& v, const RenderOptions& options) {
   const Clock::time_point now = Clock::now();
   if (now - v.lastTitle <= std::chrono::milliseconds(250)) return;
   const VkPhysicalDeviceLimits& device = v.renderer.device.properties.limits;
-  reloadIfChanged(v.state, options.scene, ReadPolicy{options.allowRead}, v.fileTimes,
+  reloadIfChanged(v.state, options.scene, readPolicyOf(options), v.fileTimes,
                   {v.pack, device.maxImageDimension2D, v.renderer.device.lavapipe, loopTraces(v.renderer.coverage)});
   const double frameMs = v.stats.frameMs.empty() ? 0.0 : v.stats.frameMs.back();
   const ViewerState& s = v.state;

@@ -25,13 +25,18 @@ expect batch-summary 2 '^raytex: 1 of 3 scenes failed$' -- "$raytex" render "$tm
   "$tmp/aWood.cfg" -o "$tmp/mid/" "${size[@]}"
 check batch-others-written test -s "$tmp/mid/aMarble.png" -a -s "$tmp/mid/aWood.png" -a ! -e "$tmp/mid/typo.png"
 
-# The exit code is the first failure's: an output that cannot be written (1) before a scene
-# error (2), and the other way round.
-mkdir -p "$tmp/first/aMarble.png"
-expect batch-first-io 1 "cannot write '$tmp/first/aMarble.png'" -- "$raytex" render "$tmp/aMarble.cfg" \
-  "$tmp/typo.cfg" -o "$tmp/first/" "${size[@]}"
-expect batch-first-scene 2 '^raytex: 2 of 2 scenes failed$' -- "$raytex" render "$tmp/typo.cfg" \
-  "$tmp/aMarble.cfg" -o "$tmp/first/" "${size[@]}"
+# The exit code is the first failure's: an output that cannot be written (1: a file size limit
+# of 1 KiB, under the 160x120 image) before a scene error (2), and the other way round.
+mkdir -p "$tmp/first"
+expect batch-first-io 1 "cannot write '$tmp/first/aMarble.png': File too large" -- bash -c 'ulimit -f 1; exec "$@"' _ \
+  "$raytex" render "$tmp/aMarble.cfg" "$tmp/typo.cfg" -o "$tmp/first/" --width 160 --height 120
+expect batch-first-scene 2 '^raytex: 2 of 2 scenes failed$' -- bash -c 'ulimit -f 1; exec "$@"' _ \
+  "$raytex" render "$tmp/typo.cfg" "$tmp/aMarble.cfg" -o "$tmp/first/" --width 160 --height 120
+# A directory in the place of an image: the whole batch is refused before anything renders.
+mkdir -p "$tmp/dir-in-the-way/aMarble.png"
+expect batch-directory-in-the-way 1 "^raytex: cannot write '$tmp/dir-in-the-way/aMarble.png': Is a directory$" -- \
+  "$raytex" render "$tmp/aWood.cfg" "$tmp/aMarble.cfg" -o "$tmp/dir-in-the-way/" "${size[@]}"
+check batch-directory-in-the-way-nothing test ! -e "$tmp/dir-in-the-way/aWood.png"
 
 # Refused before anything renders (exit 2, nothing written).
 expect batch-needs-directory 2 'give -o DIR/' -- "$raytex" render "$tmp/aMarble.cfg" "$tmp/aWood.cfg" -o "$tmp/x.png"
@@ -43,9 +48,9 @@ touch "$tmp/file"
 expect batch-not-a-directory 2 "not a directory" -- "$raytex" render "$tmp/aMarble.cfg" -o "$tmp/file/"
 mkdir -p "$tmp/b" "$tmp/same"
 cp "$tmp/aMarble.cfg" "$tmp/b/aMarble.cfg"
-expect batch-same-output 2 "would both write '$tmp/same/aMarble.png'" -- "$raytex" render "$tmp/aMarble.cfg" \
+expect batch-same-output 2 "refusing to write '$tmp/same/aMarble.png' twice: it is the image of '$tmp/aMarble.cfg' and the image of '$tmp/b/aMarble.cfg'" -- "$raytex" render "$tmp/aMarble.cfg" \
   "$tmp/b/aMarble.cfg" -o "$tmp/same/"
-expect batch-same-scene-twice 2 "would both write" -- "$raytex" render "$tmp/aMarble.cfg" "$tmp/aMarble.cfg" \
+expect batch-same-scene-twice 2 "refusing to write '$tmp/same/aMarble.png' twice" -- "$raytex" render "$tmp/aMarble.cfg" "$tmp/aMarble.cfg" \
   -o "$tmp/same/"
 check batch-same-nothing test -z "$(ls "$tmp/same")"
 expect batch-format-needs-directory 2 '^raytex: --format applies to -o DIR/' -- "$raytex" render \

@@ -275,7 +275,7 @@ check loop-budget-within-matches-reference cmp -s "$tmp/row2000-1.png" "$tmp/row
 awk 'BEGIN { for (i = 0; i <= 131072; ++i) print "sphere { radius = 1; }" }' >"$tmp/spheres131073.cfg"
 for command in render "render --reference"; do
   # shellcheck disable=SC2086  # the command's words
-  expect "sphere-limit-${command// /-}" 2 "^$tmp/spheres131073.cfg:131073:1: the scene has 131073 spheres; raytex renders at most 131072\$" \
+  expect "sphere-limit-${command// /-}" 2 "^$tmp/spheres131073.cfg:131073:1: sphere 131073 is over the limit: raytex renders at most 131072 spheres\$" \
     -- "$raytex" $command "$tmp/spheres131073.cfg" --width 8 --height 6 -o "$tmp/spheres131073.png"
 done
 

@@ -62,7 +62,7 @@ expect one-image 2 '^raytex: diff needs two images' -- "$raytex" diff "$a"
 expect heatmap-unwritable 2 "^raytex: cannot write '$tmp/no/dir/h.png'" -- "$raytex" diff "$a" "$b" --heatmap "$tmp/no/dir/h.png"
 cp "$a" "$tmp/input.png"
 ln -s "$tmp/input.png" "$tmp/link.png"
-expect heatmap-over-input 2 "^raytex: refusing to write '$tmp/link.png': it is the image '$tmp/input.png' compared$" -- \
+expect heatmap-over-input 2 "^raytex: refusing to write '$tmp/link.png': it is an image compared \\('$tmp/input.png'\\)$" -- \
   "$raytex" diff "$tmp/input.png" "$b" --heatmap "$tmp/link.png"
 check heatmap-over-input-untouched cmp -s "$a" "$tmp/input.png"
 expect heatmap-not-png 2 "^raytex: cannot write '$tmp/h.jpg': the heat map is a PNG file" -- \

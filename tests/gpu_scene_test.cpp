@@ -233,21 +233,31 @@ TEST(GpuScene, MoreMaterialsThanTheKernelHoldsIsASceneError) {
 
 namespace {
 
-// max + 1 copies of `block`, one per line: the error names the one over `max`, on line max + 1.
+// max + 1 copies of `block`, one per line: the parse stops at the one over `max`, on line
+// max + 1; a scene built in code with one more is refused by buildGpuScene in the same words.
 void expectCountLimit(const std::string& block, int max, const std::string& what) {
   std::string text;
-  for (int i = 0; i <= max; ++i) text += block + "\n";
-  Scene scene = parseSceneText(text, "many.cfg");
+  for (int i = 0; i < max; ++i) text += block + "\n";
+  const std::string message = "many.cfg:" + std::to_string(max + 1) + ":1: " + what.substr(0, what.size() - 1) + " " +
+                              std::to_string(max + 1) + " is over the limit: raytex renders at most " +
+                              std::to_string(max) + " " + what;
+  Scene scene = parseSceneText(text, "many.cfg");  // exactly `max`: fine
+  EXPECT_NO_THROW(buildGpuScene(scene, 8, 8));
   try {
-    buildGpuScene(scene, 8, 8);
+    parseSceneText(text + block + "\n", "many.cfg");
     ADD_FAILURE() << "no error for " << max + 1 << " " << what;
   } catch (const SceneError& e) {
-    EXPECT_EQ(std::string(e.what()), "many.cfg:" + std::to_string(max + 1) + ":1: the scene has " +
-                                         std::to_string(max + 1) + " " + what + "; raytex renders at most " +
-                                         std::to_string(max));
+    EXPECT_EQ(std::string(e.what()), message);
   }
-  text.erase(text.size() - block.size() - 1);  // exactly `max`: fine
-  EXPECT_NO_THROW(buildGpuScene(parseSceneText(text, "many.cfg"), 8, 8));
+  if (what == "spheres") scene.spheres.push_back(scene.spheres.back()), scene.spheres.back().loc.line = max + 1;
+  if (what == "planes") scene.planes.push_back(scene.planes.back()), scene.planes.back().loc.line = max + 1;
+  if (what == "lights") scene.lights.push_back(scene.lights.back()), scene.lights.back().loc.line = max + 1;
+  try {
+    buildGpuScene(scene, 8, 8);
+    ADD_FAILURE() << "no error for " << max + 1 << " " << what << " built in code";
+  } catch (const SceneError& e) {
+    EXPECT_EQ(std::string(e.what()), message);
+  }
 }
 
 }  // namespace

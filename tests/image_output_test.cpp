@@ -436,7 +436,7 @@ TEST(ImageOutput, DestroyedBeforeFinishItLeavesNoFileAndNoTemporary) {
     {
       ImageOutput output(bandSpec((dir / name).string(), format, image, passes));
       output.writeBand(0, 3, image.rgba.data(), {image.passes[0].data(), image.passes[1].data()});
-      EXPECT_EQ(entries(dir), format == OutputFormat::Exr ? 3u : 5u) << name;  // the temporaries
+      EXPECT_EQ(entries(dir), 2u) << name;  // the files being written have no names (O_TMPFILE)
     }
     EXPECT_EQ(entries(dir), 2u) << name;
     EXPECT_EQ(readFile(dir / name), "old") << name;
@@ -465,6 +465,8 @@ TEST(ImageOutput, RowsMissingOrWrittenTwiceAreRefusedAndNothingIsWritten) {
   EXPECT_EQ(entries(dir), 0u);
 }
 
+// Named temporaries (as where the file system refuses O_TMPFILE): the signal handler removes
+// every one of the image's files.
 TEST(ImageOutput, ASignalRemovesEveryTemporaryOfTheImage) {
   const fs::path dir = freshTempDir("image_output_signal");
   const std::vector<Pass> passes = {Pass::Normal, Pass::Depth, Pass::Albedo};
@@ -472,6 +474,7 @@ TEST(ImageOutput, ASignalRemovesEveryTemporaryOfTheImage) {
   pid_t child = fork();
   if (child == 0) {
     signal(SIGTERM, SIG_DFL);
+    setenv("RAYTEX_TEST_NAMED_TEMP", "1", 1);
     ImageOutput output(bandSpec((dir / "out.png").string(), OutputFormat::Png, image, passes));
     _exit(entries(dir) == 4 && raise(SIGTERM) == 0 ? 0 : 3);
   }
@@ -479,6 +482,22 @@ TEST(ImageOutput, ASignalRemovesEveryTemporaryOfTheImage) {
   waitpid(child, &status, 0);
   EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGTERM) << "status " << status;
   EXPECT_EQ(entries(dir), 0u);
+}
+
+// The pass files are put in place first and the image last: when one cannot be, the files this
+// output put in place are removed and the older image stays.
+TEST(ImageOutput, AFailedPublishRemovesThePassesAndKeepsTheOlderImage) {
+  const fs::path dir = freshTempDir("image_output_publish");
+  const std::vector<Pass> passes = {Pass::Normal, Pass::Albedo};
+  const BandImage image = bandImage(6, 4, passes);
+  writeFile(dir / "out.png", "old");
+  ImageOutput output(bandSpec((dir / "out.png").string(), OutputFormat::Png, image, passes));
+  output.writeBand(0, 4, image.rgba.data(), {image.passes[0].data(), image.passes[1].data()});
+  fs::create_directory(dir / "out.albedo.png");  // the second pass cannot take its name
+  EXPECT_THROW(output.finish(), IoError);
+  EXPECT_FALSE(fs::exists(dir / "out.normal.pfm"));
+  EXPECT_EQ(readFile(dir / "out.png"), "old");
+  EXPECT_EQ(entries(dir), 2u);
 }
 
 TEST(ImageOutput, PassFilesAreNamedAfterTheStem) {
@@ -547,7 +566,7 @@ TEST(OutputFile, WritesAtOffsetsAndLeavesNothingUncommitted) {
     file.writeAt(4, tail, 2);
     file.write(head, 2);
     file.writeAt(2, head, 2);
-    EXPECT_EQ(entries(dir), 2u);
+    EXPECT_EQ(entries(dir), 1u);  // the file being written has no name until commit (O_TMPFILE)
     EXPECT_EQ(readFile(dir / "out.bin"), "old");
     file.commit();
   }

@@ -144,11 +144,14 @@ TEST(OutputFile, TheTempNameFitsTheLimitAndCutsNoCharacter) {
 
 // Forks a child that writes `bytes` to `path` and is stopped in the middle by the test hook,
 // sends it `sig`, and returns its wait status.
-int signalInTheMiddleOfAWrite(const fs::path& path, int sig, bool* tempSeen) {
+// With `named`, the output takes the named temporary file (as where O_TMPFILE is refused);
+// `*entriesSeen` is what the directory held while the child was stopped.
+int signalInTheMiddleOfAWrite(const fs::path& path, int sig, bool named, size_t* entriesSeen) {
   pid_t child = fork();
   if (child == 0) {
     signal(sig, SIG_DFL);
     setenv("RAYTEX_TEST_PAUSE_IN_WRITE", "1", 1);
+    if (named) setenv("RAYTEX_TEST_NAMED_TEMP", "1", 1);
     try {
       writeFileAtomic(path.string(), someBytes(100000));
     } catch (...) {
@@ -157,7 +160,7 @@ int signalInTheMiddleOfAWrite(const fs::path& path, int sig, bool* tempSeen) {
   }
   int status = 0;
   waitpid(child, &status, WUNTRACED);
-  *tempSeen = WIFSTOPPED(status) && entries(path.parent_path()) == 2;
+  *entriesSeen = WIFSTOPPED(status) ? entries(path.parent_path()) : 0;
   if (!WIFSTOPPED(status)) return status;  // it ended without stopping: no test hook
   kill(child, sig);
   kill(child, SIGCONT);
@@ -165,16 +168,36 @@ int signalInTheMiddleOfAWrite(const fs::path& path, int sig, bool* tempSeen) {
   return status;
 }
 
-TEST(OutputFile, ASignalDuringTheWriteRemovesTheTempFileAndEndsWithTheSignal) {
-  for (int sig : {SIGINT, SIGTERM, SIGHUP}) {
-    fs::path dir = freshTempDir("output_file_signal");
-    writeFile(dir / "out.png", "old");
-    bool tempSeen = false;
-    int status = signalInTheMiddleOfAWrite(dir / "out.png", sig, &tempSeen);
-    EXPECT_TRUE(tempSeen) << strsignal(sig);
-    EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == sig) << strsignal(sig) << ": status " << status;
-    EXPECT_EQ(entries(dir), 1u) << strsignal(sig);
-    EXPECT_EQ(readFile(dir / "out.png"), "old") << strsignal(sig);
+// Every signal whose default action ends the process, in the middle of a write: the old file
+// stays and nothing else is left, whether the output has no name until commit (O_TMPFILE: no
+// file to see while it is written) or a named temporary (seen, then removed by the handler).
+TEST(OutputFile, ASignalDuringTheWriteLeavesNothingAndEndsWithTheSignal) {
+  for (bool named : {false, true})
+    for (int sig : {SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGALRM, SIGUSR1, SIGUSR2, SIGPIPE, SIGXCPU, SIGVTALRM,
+                    SIGPROF}) {
+      fs::path dir = freshTempDir("output_file_signal");
+      writeFile(dir / "out.png", "old");
+      size_t seen = 0;
+      int status = signalInTheMiddleOfAWrite(dir / "out.png", sig, named, &seen);
+      EXPECT_EQ(seen, named ? 2u : 1u) << strsignal(sig) << (named ? ", named" : "");
+      EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == sig) << strsignal(sig) << ": status " << status;
+      EXPECT_EQ(entries(dir), 1u) << strsignal(sig) << (named ? ", named" : "");
+      EXPECT_EQ(readFile(dir / "out.png"), "old") << strsignal(sig);
+    }
+}
+
+TEST(OutputFile, WithdrawRemovesWhatCommitPutInPlace) {
+  fs::path dir = freshTempDir("output_file_withdraw");
+  for (bool named : {false, true}) {
+    if (named) setenv("RAYTEX_TEST_NAMED_TEMP", "1", 1);
+    OutputFile file((dir / "a.png").string());
+    file.write(someBytes(10));
+    file.commit();
+    EXPECT_TRUE(fs::exists(dir / "a.png"));
+    file.withdraw();
+    EXPECT_FALSE(fs::exists(dir / "a.png"));
+    EXPECT_EQ(entries(dir), 0u);
+    unsetenv("RAYTEX_TEST_NAMED_TEMP");
   }
 }
 
@@ -194,28 +217,6 @@ TEST(OutputFile, AFileSizeLimitIsAWriteErrorThatLeavesNoTempFile) {
   EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << "status " << status;
   EXPECT_EQ(entries(dir), 1u);
   EXPECT_EQ(readFile(dir / "out.png"), "old");
-}
-
-TEST(OutputFile, TheSceneItsIncludesAndImagesAreNotOutputs) {
-  fs::path dir = freshTempDir("output_file_clash");
-  writeFile(dir / "inc.cfg", "material m { texture = image { file = \"tex.png\"; } }\n");
-  writeFile(dir / "tex.png", "not read here");
-  writeFile(dir / "s.cfg", "#include \"inc.cfg\"\nsphere { m; }\n");
-  Scene scene = parseSceneFile((dir / "s.cfg").string());
-  auto clash = [&](const fs::path& p) { return outputClash(p.string(), scene); };
-  EXPECT_EQ(clash(dir / "s.cfg"), "refusing to write '" + (dir / "s.cfg").string() + "': it is the scene file");
-  EXPECT_EQ(clash(dir / "inc.cfg"),
-            "refusing to write '" + (dir / "inc.cfg").string() + "': it is a file the scene includes");
-  EXPECT_EQ(clash(dir / "tex.png"),
-            "refusing to write '" + (dir / "tex.png").string() + "': it is an image the scene uses");
-  fs::create_hard_link(dir / "s.cfg", dir / "hard.cfg");  // same inode, another name
-  fs::create_symlink("inc.cfg", dir / "soft.png");
-  EXPECT_NE(clash(dir / "hard.cfg"), "");
-  EXPECT_NE(clash(dir / "soft.png"), "");
-  writeFile(dir / "other.png", "x");
-  EXPECT_EQ(clash(dir / "other.png"), "");
-  EXPECT_EQ(clash(dir / "new.png"), "");
-  EXPECT_EQ(clash(""), "");
 }
 
 TEST(Errors, ALocatedErrorIsPrintedAsItIsAndAnyOtherBehindTheProgramName) {

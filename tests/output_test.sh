@@ -90,20 +90,20 @@ unchanged() {  # unchanged NAME: the scene's files are as copied; restores them 
 }
 for cmd in "render" "render --reference" "bench" "view"; do
   # shellcheck disable=SC2086
-  expect "clash-scene: $cmd" 2 "^raytex: refusing to write '$scene': it is the scene file$" -- \
+  expect "clash-scene: $cmd" 2 "^raytex: refusing to write '$scene': it is the scene file \\('$scene'\\)$" -- \
     "$raytex" $cmd "$scene" "${small[@]}" -o "$scene"
   unchanged "clash-scene: $cmd"
   # shellcheck disable=SC2086
-  expect "clash-include: $cmd" 2 "it is a file the scene includes$" -- \
+  expect "clash-include: $cmd" 2 "it is a file the scene includes \\('$tmp/scenes/texture_include.cfg'\\)$" -- \
     "$raytex" $cmd "$scene" "${small[@]}" -o "$tmp/scenes/texture_include.cfg"
   unchanged "clash-include: $cmd"
   # shellcheck disable=SC2086
-  expect "clash-image: $cmd" 2 "^raytex: refusing to write '$tmp/scenes/../textures/earth.jpg': it is an image the scene uses$" -- \
+  expect "clash-image: $cmd" 2 "^raytex: refusing to write '$tmp/scenes/../textures/earth.jpg': it is an image the scene uses \\('$tmp/textures/earth.jpg'\\)$" -- \
     "$raytex" $cmd "$scene" "${small[@]}" -o "$tmp/scenes/../textures/earth.jpg"
   unchanged "clash-image: $cmd"
 done
 ln "$scene" "$tmp/hardlink.png"
-expect clash-hardlink 2 "^raytex: refusing to write '$tmp/hardlink.png': it is the scene file$" -- \
+expect clash-hardlink 2 "^raytex: refusing to write '$tmp/hardlink.png': it is the scene file \\('$scene'\\)$" -- \
   "$raytex" render "$scene" "${small[@]}" -o "$tmp/hardlink.png"
 unchanged clash-hardlink
 
@@ -116,28 +116,34 @@ long=$(printf 'n%.0s' $(seq 251)).png
 expect long-name 0 '' -- "$raytex" render "$scene" "${small[@]}" -o "$tmp/$long" --reference
 check long-name-png is_png "$tmp/$long"
 
-# A signal in the middle of the write (the test hook stops the process there) removes the
-# temporary file; the exit status is the signal's, and the old output stays.
+# A signal in the middle of a write (the test hook stops the process there), for every signal
+# whose default action ends the process: nothing is left beside the old output, the exit status
+# is the signal's, and the old output stays. The file being written has no name (O_TMPFILE);
+# with RAYTEX_TEST_NAMED_TEMP=1 it is a named temporary, as where the file system refuses
+# O_TMPFILE, which the signal handler removes. An EXR, written as its rows come.
 mkdir "$tmp/sig"
-for sig in INT TERM HUP; do
-  echo old >"$tmp/sig/out.png"
-  env --default-signal=INT,TERM,HUP RAYTEX_TEST_PAUSE_IN_WRITE=1 \
-    "$raytex" render "$scene" "${small[@]}" -o "$tmp/sig/out.png" --reference >/dev/null 2>&1 &
-  pid=$!
-  for _ in $(seq 200); do
-    [ "$(ps -o stat= -p "$pid" 2>/dev/null | cut -c1)" = T ] && break
-    sleep 0.05
+for named in 0 1; do
+  for sig in INT TERM HUP QUIT ALRM USR1 USR2 PIPE XCPU VTALRM PROF; do
+    echo old >"$tmp/sig/out.exr"
+    if [ "$named" = 1 ]; then hook=(RAYTEX_TEST_NAMED_TEMP=1); else hook=(); fi
+    env --default-signal RAYTEX_TEST_PAUSE_IN_WRITE=1 "${hook[@]}" \
+      "$raytex" render "$scene" "${small[@]}" -o "$tmp/sig/out.exr" --reference >/dev/null 2>&1 &
+    pid=$!
+    for _ in $(seq 200); do
+      [ "$(ps -o stat= -p "$pid" 2>/dev/null | cut -c1)" = T ] && break
+      sleep 0.05
+    done
+    check "signal-$sig-$named-stopped-mid-write" test "$(ls -A "$tmp/sig" | grep -c 'tmp-')" -eq "$named"
+    if [ "$(ps -o stat= -p "$pid" 2>/dev/null | cut -c1)" = T ]; then
+      kill -s "$sig" "$pid"
+      kill -s CONT "$pid"
+    fi
+    wait "$pid" 2>/dev/null
+    rc=$?
+    check "signal-$sig-$named-status" test "$rc" -eq $((128 + $(kill -l "$sig")))
+    check "signal-$sig-$named-nothing-left" test "$(ls -A "$tmp/sig")" = out.exr
+    check "signal-$sig-$named-old-output" grep -qx old "$tmp/sig/out.exr"
   done
-  check "signal-$sig-stopped-mid-write" test "$(ls -A "$tmp/sig" | grep -c 'tmp-')" -eq 1
-  if [ "$(ps -o stat= -p "$pid" 2>/dev/null | cut -c1)" = T ]; then
-    kill -s "$sig" "$pid"
-    kill -s CONT "$pid"
-  fi
-  wait "$pid" 2>/dev/null
-  rc=$?
-  check "signal-$sig-status" test "$rc" -eq $((128 + $(kill -l "$sig")))
-  check "signal-$sig-no-temp" no_temp "$tmp/sig"
-  check "signal-$sig-old-output" grep -qx old "$tmp/sig/out.png"
 done
 
 # A file size limit: SIGXFSZ is ignored, so it is a write error (exit 1, one line), no temp file.
