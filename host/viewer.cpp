@@ -82,6 +82,18 @@ Orbit orbitOf(const Camera& camera) {
 
 using Clock = std::chrono::steady_clock;
 
+// The scene on screen before a reload, kept until the reloaded scene has rendered every sample:
+// a reloaded scene the kernel fails (LoopBudgetError: a sphere tree's walks, known only as they
+// run) gives way to it. `packed`: its GPU data, set once the reloaded scene replaces it on the
+// device, packed with mip chains or not.
+struct LastGoodScene {
+  Scene scene;
+  Orbit orbit;
+  Selection selection;
+  std::optional<GpuScene> packed;
+  bool mipmaps = false;
+};
+
 struct ViewerState {
   Scene scene;
   Orbit orbit;
@@ -108,6 +120,7 @@ struct ViewerState {
   Clock::time_point messageAt;
   std::optional<Clock::time_point> switchedAt;  // a material key, until its frame is shown
   std::optional<GpuScene> reloaded;  // a reloaded scene's GPU data, its images checked and decoded
+  std::optional<LastGoodScene> lastGood;  // until a reloaded scene has rendered every sample
 };
 
 // How the viewer packs a scene, and what a reloaded scene's images must pass before it replaces
@@ -329,8 +342,9 @@ std::vector<std::filesystem::file_time_type> fileTimes(const Scene& scene) {
 }
 
 // Re-parses the scene when one of its files changed, and loads its images. An error (a parse
-// error with its file:line:col, an image refused or over the device's limits) is printed and
-// the last good scene stays.
+// error with its file:line:col, an image refused or over the device's limits, the loop limit)
+// is printed and the last good scene stays; it is kept (lastGood) until the reloaded scene has
+// rendered, in case the kernel fails it.
 void reloadIfChanged(ViewerState& state, const std::string& path, const ReadPolicy& policy,
                      std::vector<std::filesystem::file_time_type>& times, const ImageLimits& limits) {
   std::vector<std::filesystem::file_time_type> now = fileTimes(state.scene);
@@ -344,6 +358,8 @@ void reloadIfChanged(ViewerState& state, const std::string& path, const ReadPoli
     std::string over = imagesOverDeviceLimits(gpuScene.images, limits.maxImageDimension2D);
     if (!over.empty()) throw VulkanError(over);
     printSceneNotes(scene, stderr);
+    if (!state.lastGood)
+      state.lastGood = LastGoodScene{std::move(state.scene), state.orbit, state.selection, {}, false};
     state.scene = std::move(scene);
     state.reloaded = std::move(gpuScene);
     state.orbit = orbitOf(state.scene.camera);
@@ -666,8 +682,13 @@ void updateScene(Viewer& v, VkExtent2D size) {
   for (const Sphere& o : state.scene.spheres) unpacked = unpacked || !v.gpuScene.materialIndex.count(o.material);
   for (const Plane& o : state.scene.planes) unpacked = unpacked || !v.gpuScene.materialIndex.count(o.material);
   if (size.width != v.renderer.width || size.height != v.renderer.height || unpacked) state.dirty = true;
+  const bool packedMipmaps = v.pack.mipmaps;  // the scene on the device's
   const bool repack = configureMethods(v);
   if (!state.dirty && !state.cameraMoved) return;
+  if (state.dirty && state.reloaded && state.lastGood && !state.lastGood->packed) {
+    state.lastGood->packed = std::move(v.gpuScene);
+    state.lastGood->mipmaps = packedMipmaps;
+  }
   if (state.dirty && state.reloaded && !repack) {
     v.gpuScene = std::move(*state.reloaded);
   } else if (state.dirty && (unpacked || repack || state.reloaded)) {
@@ -704,10 +725,51 @@ void keepUvPass(Viewer& v) {
 void renderSplitSample(Viewer& v) {
   preparePipeline(v.renderer, v.splitKeys[0]);
   swapAccumulation(v.renderer);
-  renderSample(v.renderer, v.samples);
+  try {
+    renderSample(v.renderer, v.samples);
+  } catch (const LoopBudgetError&) {
+    swapAccumulation(v.renderer);  // the job's set stays the first
+    throw;
+  }
   swapAccumulation(v.renderer);
   preparePipeline(v.renderer, v.splitKeys[1]);
   renderSample(v.renderer, v.samples);
+}
+
+// The scene before a reload back on screen (lastGood), the reloaded one's kernel having failed
+// with `error`: printed, and the title says so, as for the other reload errors. The scene's
+// files as they are now count as seen: the next change to one of them reloads.
+void restoreLastGood(Viewer& v, const Error& error) {
+  ViewerState& state = v.state;
+  LastGoodScene& good = *state.lastGood;
+  fprintf(stderr, "%s\n", errorLine(error).c_str());
+  state.scene = std::move(good.scene);
+  state.orbit = good.orbit;
+  state.selection = good.selection;
+  v.gpuScene = std::move(*good.packed);
+  v.pack.mipmaps = good.mipmaps;  // configureMethods packs it again where the methods need otherwise
+  state.lastGood.reset();
+  state.reloaded.reset();
+  state.dirty = true;
+  state.sceneError = true;
+  state.message.clear();  // the "reloaded" no longer holds
+  v.fileTimes = fileTimes(state.scene);
+}
+
+// Adds the next sample to the image on screen (both methods' with the split); false when the
+// kernel failed a reloaded scene and the last good scene came back instead.
+bool addSample(Viewer& v) {
+  try {
+    if (v.state.split) renderSplitSample(v);
+    else renderSample(v.renderer, v.samples);
+  } catch (const LoopBudgetError& e) {
+    if (!v.state.lastGood || !v.state.lastGood->packed) throw;
+    restoreLastGood(v, e);
+    return false;
+  }
+  ++v.samples;
+  if (v.samples == v.target) v.state.lastGood.reset();  // a reloaded scene rendered every sample
+  return true;
 }
 
 // The image to the window, with the overlays that are on drawn over a copy of it: the uv pass,
@@ -732,9 +794,7 @@ void renderAndShow(Viewer& v, const RenderOptions& options) {
   if (options.frames && v.samples == v.target) v.samples = 0;  // --frames: keep rendering
   const bool render = v.samples < v.target;
   if (render) {
-    if (state.split) renderSplitSample(v);
-    else renderSample(v.renderer, v.samples);
-    ++v.samples;
+    if (!addSample(v)) return;
     v.stats.gpuMs.push_back(v.renderer.lastFrameMs);
     if (v.samples == 1 && state.uvPass) keepUvPass(v);
   }

@@ -190,6 +190,37 @@ check reload-image-error-message grep -q "texture_include.cfg:[0-9]*:[0-9]*: can
 check reload-image-keeps-running kill -0 "$viewer"
 sed -i "s|\"$src/tests/malformed/images/truncated.png\"|\"../textures/earth.jpg\"|" "$tmp/scenes/texture_include.cfg"
 check reload-image-recovers waitTitle 'sphere: aWood .*reloaded'
+# Reloads past the lavapipe driver's loop limit: printed, and the last good scene stays. Each
+# version is good.cfg with lines added (sceneWith), written beside the scene and renamed over it,
+# as sed -i does, so that a reload never reads half a file.
+cp "$tmp/scenes/textures.cfg" "$tmp/scenes/good.cfg"
+sceneWith() {  # sceneWith LIGHTS COUNT OBJECT: good.cfg, LIGHTS dim lights and COUNT times OBJECT
+  {
+    cat "$tmp/scenes/good.cfg"
+    for _ in $(seq "$1"); do echo 'light { position = (-6, 10, 6); color = (0.003, 0.003, 0.003); }'; done
+    for _ in $(seq "$2"); do echo "$3"; done
+  } >"$tmp/scenes/next.cfg"
+  mv "$tmp/scenes/next.cfg" "$tmp/scenes/textures.cfg"
+}
+# Known before the swap: every ray tests every plane, (255 + 1) x (252 + 3) + reserve passes.
+sceneWith 254 250 'plane { normal = (0, 1, 0); distance = -3; }'
+check reload-loop-limit-title waitTitle 'sphere: aWood .*scene error'
+check reload-loop-limit-message grep -q "textures.cfg:[0-9]*:1: the scene has 255 lights and 252 objects every ray" \
+  "$tmp/reload.log"
+cp "$tmp/scenes/good.cfg" "$tmp/scenes/next.cfg"
+mv "$tmp/scenes/next.cfg" "$tmp/scenes/textures.cfg"
+check reload-loop-limit-recovers waitTitle 'sphere: aWood .*reloaded'
+# Known only as the kernel runs: the sphere tree's walks through 1500 coincident spheres for 32
+# lights (rendered headless at this size 800 of them stay within it, 1000 pass it; small, few pixels
+# see them, so the failing frame is quick). The kernel's first frame of it fails, and the last
+# good scene comes back (it converges, which the failed one cannot).
+sceneWith 32 1500 'sphere { center = (3, 0, 0); radius = 0.1; }'
+check reload-kernel-error-title waitTitle 'sphere: aWood .*scene error'
+check reload-kernel-error-message grep -q "raytex: the scene needs more than 65000 loop passes" "$tmp/reload.log"
+check reload-kernel-keeps-running kill -0 "$viewer"
+check reload-kernel-last-good-converges waitTitle 'sphere: aWood .*| 64/64 samples .*scene error'
+mv "$tmp/scenes/good.cfg" "$tmp/scenes/textures.cfg"
+check reload-kernel-recovers waitTitle 'sphere: aWood .*reloaded'
 # A reload that makes -o one of the scene's images: F12 then refuses to write it, says why, and
 # the viewer goes on.
 cp "$src/textures/uv_grid.png" "$tmp/scenes/shot.png"
