@@ -31,4 +31,6 @@ struct BandSink {
   virtual void withdraw() = 0;
   // Colour values written as 0 because they were not finite (PNG; EXR and PFM keep them).
   virtual size_t nonFinite() const { return 0; }
+  // Finite values written as +-65504 because they lie beyond the half range (EXR in half floats).
+  virtual size_t clamped() const { return 0; }
 };

@@ -4,6 +4,7 @@
 #include "output_file.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <exception>
 #include <map>
@@ -18,6 +19,19 @@
 #include <half.h>
 
 namespace {
+
+// The largest finite half, 65504: a float beyond it would round to an infinity.
+constexpr float kHalfMax = HALF_MAX;
+
+// `value` as a half; a finite value beyond +-kHalfMax becomes +-kHalfMax and is counted in
+// `clamped`. NaN and the infinities stay what they are.
+Imath::half toHalf(float value, size_t& clamped) {
+  if (std::isfinite(value) && std::fabs(value) > kHalfMax) {
+    ++clamped;
+    return Imath::half(std::copysign(kHalfMax, value));
+  }
+  return Imath::half(value);
+}
 
 // OpenEXR's output stream over an OutputFile: in place for a regular file, else in memory until
 // flush(). A failure is kept, since OpenEXR swallows those of its destructor.
@@ -143,7 +157,8 @@ struct ExrSink : BandSink {
   }
 
   // The slice of one channel for the band: float values straight from the band's vec4s, half
-  // values converted into `halves` (OpenEXR takes half channels from half slices only).
+  // values converted into `halves` (OpenEXR takes half channels from half slices only), those
+  // beyond the half range clamped (toHalf).
   Imf::Slice channelSlice(const ExrChannel& channel, const Band& band, Imath::half*& halves) {
     if (channel.component < 0)
       return channel.half ? Imf::Slice(Imf::HALF, reinterpret_cast<char*>(halfOnes.data()), sizeof(Imath::half), 0)
@@ -151,7 +166,7 @@ struct ExrSink : BandSink {
     const float* values = band.plane(channel.source) + channel.component;
     if (!channel.half) return bandSlice(Imf::FLOAT, values, 4 * sizeof(float), band.firstRow, spec.width);
     Imath::half* out = halves;
-    for (size_t i = 0; i < size_t(band.rows) * spec.width; ++i) out[i] = Imath::half(values[i * 4]);
+    for (size_t i = 0; i < size_t(band.rows) * spec.width; ++i) out[i] = toHalf(values[i * 4], clampedValues);
     halves += size_t(band.rows) * spec.width;
     return bandSlice(Imf::HALF, out, sizeof(Imath::half), band.firstRow, spec.width);
   }
@@ -180,6 +195,8 @@ struct ExrSink : BandSink {
   void commit() override { file.commit(); }
   void withdraw() override { file.withdraw(); }
 
+  size_t clamped() const override { return clampedValues; }
+
   OutputSpec spec;
   std::vector<ExrChannel> channels;
   OutputFile file;
@@ -190,6 +207,7 @@ struct ExrSink : BandSink {
   std::unique_ptr<Imf::OutputFile> exr;  // destroyed first: it writes through the stream
   int nextRow = 0;
   std::map<int, HeldBand> held;  // by first row
+  size_t clampedValues = 0;      // finite values beyond the half range, written as +-kHalfMax
 };
 
 }  // namespace

@@ -22,6 +22,7 @@
 #include <ImfHeader.h>
 #include <ImfIO.h>
 #include <ImfInputFile.h>
+#include <ImfRgbaFile.h>
 #include <ImfThreading.h>
 
 namespace {
@@ -274,31 +275,40 @@ class ExrInput : public Imf::IStream {
   uint64_t position_ = 0;
 };
 
-// R, G, B, or Y alone: the channels read, each full size.
-std::vector<std::string> colourChannels(const std::string& path, const Imf::ChannelList& channels) {
-  std::vector<std::string> names = {"R", "G", "B"};
-  if (!channels.findChannel("R") || !channels.findChannel("G") || !channels.findChannel("B")) names = {"Y"};
-  for (const std::string& name : names) {
-    const Imf::Channel* channel = channels.findChannel(name);
-    if (!channel) refuse(path, "the EXR file has no R, G and B channels, nor Y");
-    if (channel->xSampling != 1 || channel->ySampling != 1)
-      refuse(path, "the EXR channel " + name + " is subsampled, which is not supported");
-  }
-  return names;
+// Where an EXR file's colour is: its R, G and B channels; else Y with chroma RY and BY, as
+// OpenEXR's RgbaOutputFile writes luminance and chroma; else Y alone, grey.
+enum class ExrColour { Rgb, LuminanceChroma, Luminance };
+
+// Refuses a channel that is not sampled `sampling` x `sampling`.
+void checkSampling(const std::string& path, const Imf::ChannelList& channels, const char* name, int sampling) {
+  const Imf::Channel* channel = channels.findChannel(name);
+  if (channel->xSampling != sampling || channel->ySampling != sampling)
+    refuse(path, std::string("the EXR channel ") + name + " is sampled " + std::to_string(channel->xSampling) + "x" +
+                     std::to_string(channel->ySampling) + ", which is not supported here (only " +
+                     std::to_string(sampling) + "x" + std::to_string(sampling) + ")");
 }
 
-FloatImage decodeExr(const std::string& path, const InputFd& in) {
-  Imf::setGlobalThreadCount(0);
-  ExrInput stream(path, in);
-  Imf::InputFile file(stream, 0);
-  const std::vector<std::string> names = colourChannels(path, file.header().channels());
-  if (!file.isComplete()) refuse(path, "the file ends early or its table of offsets is corrupt");
+// The colour channels of the file's first layer (the unnamed one): R, G and B when it has all
+// three, whatever else it holds; chroma only beside Y, both RY and BY, each sampled 2x2.
+ExrColour exrColour(const std::string& path, const Imf::ChannelList& channels) {
+  if (channels.findChannel("R") && channels.findChannel("G") && channels.findChannel("B")) {
+    for (const char* name : {"R", "G", "B"}) checkSampling(path, channels, name, 1);
+    return ExrColour::Rgb;
+  }
+  if (!channels.findChannel("Y")) refuse(path, "the EXR file has no R, G and B channels, nor Y");
+  checkSampling(path, channels, "Y", 1);
+  const bool ry = channels.findChannel("RY"), by = channels.findChannel("BY");
+  if (!ry && !by) return ExrColour::Luminance;
+  if (!ry || !by) refuse(path, "the EXR file has luminance Y and one chroma channel of RY and BY, not both");
+  for (const char* name : {"RY", "BY"}) checkSampling(path, channels, name, 2);
+  return ExrColour::LuminanceChroma;
+}
+
+// R, G and B, or Y into every channel, as stored (float), through one frame buffer.
+void readChannels(Imf::InputFile& file, ExrColour colour, FloatImage& image) {
   const Imath::Box2i window = file.header().dataWindow();
-  FloatImage image;
-  image.width = window.max.x - window.min.x + 1;
-  image.height = window.max.y - window.min.y + 1;
-  image.channels = 3;
-  image.pixels.assign(size_t(image.width) * size_t(image.height) * 3, 0.0f);
+  const std::vector<std::string> names = colour == ExrColour::Rgb ? std::vector<std::string>{"R", "G", "B"}
+                                                                   : std::vector<std::string>{"Y"};
   const size_t xStride = 3 * sizeof(float), yStride = xStride * size_t(image.width);
   // OpenEXR addresses pixel (x, y) of the data window at base + x * xStride + y * yStride.
   const uintptr_t origin = reinterpret_cast<uintptr_t>(image.pixels.data()) - uintptr_t(intptr_t(window.min.y)) * yStride -
@@ -310,6 +320,46 @@ FloatImage decodeExr(const std::string& path, const InputFd& in) {
   file.readPixels(window.min.y, window.max.y);
   if (names.size() == 1)
     for (size_t i = 0; i < image.pixels.size(); i += 3) image.pixels[i + 1] = image.pixels[i + 2] = image.pixels[i];
+}
+
+// Luminance and chroma converted to RGB by OpenEXR's RgbaInputFile (the chroma filtered back
+// to every pixel, the primaries of the file's chromaticities, else Rec. 709): half values, read
+// a row at a time into one row of Imf::Rgba, so that only a row is held beside the image.
+void readLuminanceChroma(const std::string& path, const InputFd& in, FloatImage& image) {
+  ExrInput stream(path, in);
+  Imf::RgbaInputFile file(stream, 0);
+  const Imath::Box2i window = file.dataWindow();
+  std::vector<Imf::Rgba> row(size_t(image.width));
+  // Pixel (x, y) at base + x + y * 0: every row into `row`.
+  const uintptr_t base = reinterpret_cast<uintptr_t>(row.data()) - uintptr_t(intptr_t(window.min.x)) * sizeof(Imf::Rgba);
+  file.setFrameBuffer(reinterpret_cast<Imf::Rgba*>(base), 1, 0);
+  for (int y = window.min.y; y <= window.max.y; ++y) {
+    file.readPixels(y);
+    float* out = image.pixels.data() + size_t(y - window.min.y) * size_t(image.width) * 3;
+    for (const Imf::Rgba& pixel : row) {
+      *out++ = float(pixel.r);
+      *out++ = float(pixel.g);
+      *out++ = float(pixel.b);
+    }
+  }
+}
+
+FloatImage decodeExr(const std::string& path, const InputFd& in) {
+  Imf::setGlobalThreadCount(0);
+  ExrInput stream(path, in);
+  Imf::InputFile file(stream, 0);
+  const ExrColour colour = exrColour(path, file.header().channels());
+  if (!file.isComplete()) refuse(path, "the file ends early or its table of offsets is corrupt");
+  const Imath::Box2i window = file.header().dataWindow();
+  FloatImage image;
+  image.width = window.max.x - window.min.x + 1;
+  image.height = window.max.y - window.min.y + 1;
+  image.channels = 3;
+  image.pixels.assign(size_t(image.width) * size_t(image.height) * 3, 0.0f);
+  if (colour == ExrColour::LuminanceChroma)
+    readLuminanceChroma(path, in, image);
+  else
+    readChannels(file, colour, image);
   return image;
 }
 

@@ -185,11 +185,12 @@ void renderPrepared(Renderer& renderer, const Scene& scene, const GpuScene& gpuS
     throw VulkanError(std::to_string(renderer.device.validationErrors - errorsBefore) + " Vulkan validation error(s)");
 }
 
-// Makes the output files visible, with a warning for colour values written as black.
+// Makes the output files visible, with a warning for values not written as given (colour
+// values written as black, values clamped to the half range).
 void finishOutput(RenderOutput& output, HeadlessRender* out) {
   output.files->finish();
   out->nonFinite = output.files->nonFinite();
-  if (out->nonFinite > 0) fprintf(stderr, "warning: %zu non-finite colour values (written as black)\n", out->nonFinite);
+  printOutputWarnings(*output.files, stderr);
 }
 
 // Everything on the device: creation, then renderPrepared.

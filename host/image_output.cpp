@@ -129,4 +129,13 @@ void ImageOutput::publish() {
 
 size_t ImageOutput::nonFinite() const { return sinks_.front()->nonFinite(); }
 
+size_t ImageOutput::clamped() const { return sinks_.front()->clamped(); }
+
 std::vector<std::string> ImageOutput::paths() const { return paths_; }
+
+void printOutputWarnings(const ImageOutput& output, FILE* to) {
+  if (output.nonFinite() > 0)
+    fprintf(to, "warning: %zu non-finite colour values (written as black)\n", output.nonFinite());
+  if (output.clamped() > 0)
+    fprintf(to, "warning: %zu values over the half-float range clamped to +-65504\n", output.clamped());
+}

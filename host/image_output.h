@@ -6,7 +6,9 @@
 //   sRGB to 0..65535), written at finish(). Metadata as tEXt chunks (iTXt for a value that is
 //   not ASCII, taken as UTF-8) after IHDR, in the PNG files of passes too.
 // - EXR: a scanline file (ZIP, INCREASING_Y) whose rows are written as their band comes; only
-//   the band and OpenEXR's line buffer are held. Channels R, G, B, A (A = 1), and per pass
+//   the band and OpenEXR's line buffer are held. In half floats a finite value beyond the half
+//   range is written as +-65504, the largest half, and counted (clamped()); NaN and the
+//   infinities are written as they are, as in float. Channels R, G, B, A (A = 1), and per pass
 //   "<name>.<letter>" for each of its channelNames plus "<name>.A", the coverage. Metadata as
 //   string attributes. An output that cannot seek (a device, a FIFO, standard output) gets a
 //   file encoded in memory and written through at finish(), since OpenEXR writes its table of
@@ -24,6 +26,7 @@
 #include "passes.h"
 
 #include <cstddef>
+#include <cstdio>
 #include <memory>
 #include <string>
 #include <utility>
@@ -83,6 +86,10 @@ class ImageOutput {
   // encodeSrgb's rule); EXR and PFM store them as they are, and count 0.
   size_t nonFinite() const;
 
+  // Finite values of the main file, colour and passes, written as +-65504 because they lie
+  // beyond the half-float range (EXR with spec.half); 0 for every other output.
+  size_t clamped() const;
+
   // Every file written: the main path first, then the pass files.
   std::vector<std::string> paths() const;
 
@@ -94,3 +101,9 @@ class ImageOutput {
   std::vector<std::string> paths_;
   std::vector<bool> rowWritten_;
 };
+
+// Writes a warning line to `to` for each kind of value the main file holds otherwise than it
+// was given: "warning: N non-finite colour values (written as black)" (nonFinite()) and
+// "warning: N values over the half-float range clamped to +-65504" (clamped()). Nothing when
+// both counts are 0.
+void printOutputWarnings(const ImageOutput& output, FILE* to);

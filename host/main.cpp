@@ -61,8 +61,7 @@ void runReference(const RenderOptions& options) {
   ImageOutput output(renderOutputSpec(options, job, renderMetadata(options, job, facts)));
   output.writeBand(0, int(job.height), rgba.data(), {});
   output.finish();
-  if (output.nonFinite() > 0)
-    fprintf(stderr, "warning: %zu non-finite colour values (written as black)\n", output.nonFinite());
+  printOutputWarnings(output, stderr);
   const double encodeMs = lapMs(t);
   if (options.stats)
     printf("parse %.1f ms | reference %.1f ms | encode %.1f ms | %ux%u, %u spp\n", parseMs, renderMs, encodeMs,

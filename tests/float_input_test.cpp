@@ -1,13 +1,17 @@
 // readExr and readPfm (host/float_input.h): files the writers made read back exactly, files
 // written here by the formats' specifications (big-endian PFM, an EXR of Y alone, a data window
-// away from the origin), and every kind of bad file refused with a message naming it.
+// away from the origin) or by OpenEXR's RgbaOutputFile (luminance and chroma), and every kind
+// of bad file refused with a message naming it.
 #include "float_input.h"
+#include "image_metrics.h"
 #include "image_output.h"
+#include "image_read.h"
 #include "support/band_images.h"
 #include "support/files.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstring>
 #include <filesystem>
 
@@ -17,6 +21,7 @@
 #include <ImfFrameBuffer.h>
 #include <ImfHeader.h>
 #include <ImfOutputFile.h>
+#include <ImfRgbaFile.h>
 
 namespace fs = std::filesystem;
 
@@ -123,6 +128,65 @@ TEST(FloatInput, ReadsAnExrOfYAloneAsGreyAndADataWindowAwayFromTheOrigin) {
   EXPECT_EQ(moved.at(4, 3, 2), 304.0f);
   writeExrByHand(dir / "depth.exr", {"Z"}, 0, 0, 3, 3);
   EXPECT_REFUSED(readError(readExr, dir / "depth.exr"), dir / "depth.exr", "no R, G and B channels, nor Y");
+}
+
+// A smooth colour at pixel (x, y) of a w x h image, linear: luminance/chroma keeps one chroma
+// sample for each 2x2 pixels and filters it back, which a smooth image survives.
+Imf::Rgba smoothColour(int x, int y, int w, int h) {
+  const float u = float(x) / float(w), v = float(y) / float(h);
+  return Imf::Rgba(0.8f - 0.5f * u, 0.2f + 0.6f * v, 0.1f + 0.3f * (u + v), 1.0f);
+}
+
+// An EXR of smoothColour through OpenEXR's RgbaOutputFile: `channels` WRITE_YCA (Y, RY, BY,
+// A, as half, the chroma sampled 2x2) or WRITE_RGBA; its data window at (x0, y0).
+void writeRgbaExr(const fs::path& path, Imf::RgbaChannels channels, int x0, int y0, int w, int h) {
+  std::vector<Imf::Rgba> pixels;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) pixels.push_back(smoothColour(x, y, w, h));
+  const Imath::Box2i window({x0, y0}, {x0 + w - 1, y0 + h - 1});
+  Imf::RgbaOutputFile file(path.c_str(), window, window, channels);
+  file.setFrameBuffer(pixels.data() - (ptrdiff_t(y0) * w + x0), 1, size_t(w));
+  file.writePixels(h);
+}
+
+TEST(FloatInput, ReadsALuminanceChromaExrAsItsColour) {
+  const fs::path dir = freshTempDir("float_input_yca");
+  const int w = 48, h = 36;
+  writeRgbaExr(dir / "yca.exr", Imf::WRITE_YCA, -6, 4, w, h);  // the origin even, as 2x2 sampling needs
+  writeRgbaExr(dir / "rgb.exr", Imf::WRITE_RGBA, 0, 0, w, h);
+  const FloatImage got = readExr((dir / "yca.exr").string(), kBudget);
+  ASSERT_EQ(got.width, w);
+  ASSERT_EQ(got.height, h);
+  // RgbaOutputFile keeps 7 of a half's 10 fraction bits of Y and 5 of the chroma (R - Y) / Y
+  // and (B - Y) / Y, which moves R and B by at most 2^-6 |chroma| Y + 2^-8 of themselves: with
+  // chroma of at most 1.5 here, 2.7% of the pixel's largest channel, and G (from Y, R and B) by
+  // 1.6% (the filters restore a linear gradient). Measured: 2.5%.
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const Imf::Rgba want = smoothColour(x, y, w, h);
+      const float wanted[3] = {want.r, want.g, want.b};
+      const float tolerance = 0.03f * std::max({wanted[0], wanted[1], wanted[2]});
+      for (int c = 0; c < 3; ++c) EXPECT_NEAR(got.at(x, y, c), wanted[c], tolerance) << x << ", " << y << ", " << c;
+    }
+  // As raytex diff reads and measures them: the half RGB file and its luminance/chroma copy
+  // (0.0017; read as grey, Y alone, 0.14).
+  const double rmse = rootMeanSquareError(readLinearImage((dir / "rgb.exr").string(), kBudget).image,
+                                          readLinearImage((dir / "yca.exr").string(), kBudget).image);
+  EXPECT_LT(rmse, 0.005);
+}
+
+TEST(FloatInput, ReadsRgbBesideLuminanceChromaAndRefusesChromaItCannotConvert) {
+  const fs::path dir = freshTempDir("float_input_yca_bad");
+  writeExrByHand(dir / "both.exr", {"R", "G", "B", "Y", "RY", "BY"}, 0, 0, 4, 4);  // RGB wins, as stored
+  const FloatImage both = readExr((dir / "both.exr").string(), kBudget);
+  EXPECT_EQ(both.at(1, 2, 0), 201.0f);
+  EXPECT_EQ(both.at(1, 2, 1), 1201.0f);
+  EXPECT_EQ(both.at(1, 2, 2), 2201.0f);
+  writeExrByHand(dir / "full.exr", {"Y", "RY", "BY"}, 0, 0, 4, 4);  // chroma at every pixel
+  EXPECT_REFUSED(readError(readExr, dir / "full.exr"), dir / "full.exr",
+                 "the EXR channel RY is sampled 1x1, which is not supported here (only 2x2)");
+  writeExrByHand(dir / "half.exr", {"Y", "RY"}, 0, 0, 4, 4);
+  EXPECT_REFUSED(readError(readExr, dir / "half.exr"), dir / "half.exr", "one chroma channel of RY and BY, not both");
 }
 
 TEST(FloatInput, RefusesBadPfmFiles) {

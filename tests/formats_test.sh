@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# Output formats end to end: -o by extension (PNG 8/16 bits, EXR float/half, PFM), metadata,
-# passes (--aov) as EXR layers or files beside the image, -o DIR/ --format, and render --compare
-# with its exit codes. Round trips go through raytex diff against the PNG.
+# Output formats end to end: -o by extension (PNG 8/16 bits, EXR float/half, half's range
+# clamped, PFM), metadata, passes (--aov) as EXR layers or files beside the image, -o DIR/
+# --format, and render --compare with its exit codes. Round trips go through raytex diff
+# against the PNG.
 # Usage: formats_test.sh RAYTEX SOURCE_DIR
 set -u
 source "$(dirname "$0")/cli_checks.sh"
@@ -21,6 +22,32 @@ expect half-near-float 0 '' -- "$raytex" diff "$tmp/h.exr" "$tmp/a.exr" --fail-r
 check exr-magic test "$(head -c 4 "$tmp/a.exr" | od -An -tx1 | tr -d ' \n')" = 762f3101
 check pfm-header test "$(head -c 13 "$tmp/a.pfm")" = "$(printf 'PF\n64 48\n-1.0')"
 check half-smaller test "$(stat -c %s "$tmp/h.exr")" -lt "$(stat -c %s "$tmp/a.exr")"
+check half-in-range-silent test -z "$(render -o "$tmp/h2.exr" --half 2>&1)"
+
+# Half floats end at 65504: a finite value beyond is written as +-65504 (not an infinity, which
+# raytex diff refuses), with one warning line. Every pixel of this view is the background, whose
+# R of 1e5 is beyond the range and whose G and B are halves exactly: 64 x 48 values clamped, each
+# 1e5 - 65504 = 34496 under the float render's, an RMSE over the 3 channels of 34496 / sqrt(3).
+cat >"$tmp/bright.cfg" <<'EOF'
+camera { eye = (0, 0, 5); lookat = (0, 0, 0); up = (0, 1, 0); fov = 40; }
+light { position = (3, 4, 5); color = (1, 1, 1); }
+background = (100000, 0.25, 2);
+sphere { center = (0, 0, 20); radius = 1; }  // behind the eye
+EOF
+clamped='warning: 3072 values over the half-float range clamped to +-65504'
+bright() { "$raytex" render "$tmp/bright.cfg" "${size[@]}" "$@" 2>&1; }
+out=$(bright -o "$tmp/bh.exr" --half)
+check half-clamp-exit-0 test $? -eq 0
+check half-clamp-one-warning test "$out" = "$clamped"
+expect half-clamp-finite 0 'RMSE +0 ' -- "$raytex" diff "$tmp/bh.exr" "$tmp/bh.exr" --fail-rmse 0
+bright -o "$tmp/bf.exr" >/dev/null
+expect half-clamp-rmse 0 'RMSE +19916\.3 ' -- "$raytex" diff "$tmp/bf.exr" "$tmp/bh.exr"
+expect half-clamp-to-65504 0 'max diff +34496 ' -- "$raytex" diff "$tmp/bf.exr" "$tmp/bh.exr"
+check half-clamp-reference test "$(bright -o "$tmp/br.exr" --half --reference)" = "$clamped"
+mkdir -p "$tmp/bd"
+check half-clamp-batch test "$(bright -o "$tmp/bd/" --format exr --half)" = "$clamped"
+check half-clamp-batch-finite "$raytex" diff "$tmp/bd/bright.exr" "$tmp/bh.exr" --fail-rmse 0
+
 render -o "$tmp/d.png" --depth 16
 check png-16-bit test "$(od -An -tu1 -j24 -N1 "$tmp/d.png" | tr -d ' ')" = 16
 # Read back at 16 bits: closer to the float image than the 8-bit PNG, within half a 16-bit step.

@@ -345,6 +345,43 @@ TEST(ImageOutput, HalfExrIsWithinHalfPrecisionButPositionStaysFloat) {
   EXPECT_NE(bitsOf(planes["R"][3]), bitsOf(image.rgba[3 * 4])) << "not rounded to half: the test proves nothing";
 }
 
+TEST(ImageOutput, HalfExrClampsFiniteValuesBeyondTheHalfRangeAndCountsThem) {
+  const fs::path dir = freshTempDir("image_output_half_clamp");
+  const std::vector<Pass> passes = {Pass::Depth, Pass::Position};
+  BandImage image = bandImage(7, 5, passes);
+  // 65504 is the largest half; 65519 would round to it, 65520 and beyond to an infinity.
+  const std::pair<size_t, float> over[] = {{0 * 4 + 0, 70000.0f}, {1 * 4 + 1, -1e6f}, {2 * 4 + 2, 65519.0f},
+                                           {3 * 4 + 0, 3e38f}};
+  for (const auto& [at, value] : over) image.rgba[at] = value;
+  image.rgba[4 * 4 + 0] = 65504.0f;  // the largest half itself: written as it is, not counted
+  image.rgba[5 * 4 + 1] = INFINITY;  // not finite: written as it is, as in float
+  image.rgba[6 * 4 + 2] = NAN;
+  image.passes[0][8 * 4] = 1e5f;     // depth: a half channel too
+  image.passes[1][9 * 4] = 1e6f;     // position: float, never clamped
+  OutputSpec spec = bandSpec((dir / "img.exr").string(), OutputFormat::Exr, image, passes);
+  spec.half = true;
+  ImageOutput output(spec);
+  writeBands(output, image, 2, BandOrder::Shuffled);
+  output.finish();
+  EXPECT_EQ(output.clamped(), 5u);
+  EXPECT_EQ(output.nonFinite(), 0u);
+  int width = 0, height = 0;
+  auto planes = readChannels((dir / "img.exr").string(), &width, &height);
+  for (const auto& [at, value] : over)
+    EXPECT_EQ(planes[std::string(1, "RGB"[at % 4])][at / 4], std::copysign(65504.0f, value)) << at;
+  EXPECT_EQ(planes["R"][4], 65504.0f);
+  EXPECT_EQ(planes["G"][5], INFINITY);
+  EXPECT_TRUE(std::isnan(planes["B"][6]));
+  EXPECT_EQ(planes["depth.Z"][8], 65504.0f);
+  EXPECT_EQ(planes["position.X"][9], 1e6f);
+  const auto nearHalf = [](float got, float want) {  // as in the test above
+    return std::fabs(got - want) <= std::max(std::fabs(want) * 0x1p-11f, 0x1p-25f);
+  };
+  for (size_t i = 7; i < size_t(7 * 5); ++i)  // the pixels left as bandImage makes them
+    for (int c = 0; c < 3; ++c)
+      EXPECT_TRUE(nearHalf(planes[std::string(1, "RGB"[c])][i], image.rgba[i * 4 + size_t(c)])) << i << " " << c;
+}
+
 TEST(ImageOutput, Png8WithoutMetadataIsTheBytesOfEncodePngAndCountsNonFiniteValues) {
   const fs::path dir = freshTempDir("image_output_png8");
   BandImage image = bandImage(21, 13, {});
