@@ -2,6 +2,7 @@
 
 #include "error.h"
 #include "image_load.h"
+#include "input_file.h"
 
 #include <algorithm>
 #include <cctype>
@@ -42,15 +43,13 @@ struct InputFd {
   }
 };
 
-// Opens `path`: a regular file only, so that a FIFO or a device cannot block or stream forever
-// (checked before the open, which does not block, and again on what it opened).
+// Opens `path`: a regular file only (input_file.h).
 void openRegular(const std::string& path, InputFd& in) {
+  std::string why;
+  in.fd = openRegularFile(path, &why);
+  if (in.fd < 0) refuse(path, why == "not a regular file" ? why : "cannot open: " + why);
   struct stat st {};
-  if (stat(path.c_str(), &st) != 0) refuse(path, std::string("cannot open: ") + strerror(errno));
-  if (!S_ISREG(st.st_mode)) refuse(path, "not a regular file");
-  in.fd = open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
-  if (in.fd < 0) refuse(path, std::string("cannot open: ") + strerror(errno));
-  if (fstat(in.fd, &st) != 0 || !S_ISREG(st.st_mode)) refuse(path, "not a regular file");
+  fstat(in.fd, &st);
   in.size = uint64_t(st.st_size);
 }
 
