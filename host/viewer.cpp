@@ -82,7 +82,7 @@ Orbit orbitOf(const Camera& camera) {
 
 using Clock = std::chrono::steady_clock;
 
-// The scene on screen before a reload, kept until the reloaded scene has rendered every sample:
+// The scene on screen before a reload, kept until the reloaded scene has rendered a sample:
 // a reloaded scene the kernel fails (LoopBudgetError: a sphere tree's walks, known only as they
 // run) gives way to it. `packed`: its GPU data, set once the reloaded scene replaces it on the
 // device, packed with mip chains or not.
@@ -120,7 +120,7 @@ struct ViewerState {
   Clock::time_point messageAt;
   std::optional<Clock::time_point> switchedAt;  // a material key, until its frame is shown
   std::optional<GpuScene> reloaded;  // a reloaded scene's GPU data, its images checked and decoded
-  std::optional<LastGoodScene> lastGood;  // until a reloaded scene has rendered every sample
+  std::optional<LastGoodScene> lastGood;  // until a reloaded scene has rendered a sample
 };
 
 // How the viewer packs a scene, and what a reloaded scene's images must pass before it replaces
@@ -768,7 +768,9 @@ bool addSample(Viewer& v) {
     return false;
   }
   ++v.samples;
-  if (v.samples == v.target) v.state.lastGood.reset();  // a reloaded scene rendered every sample
+  // A reloaded scene that rendered a sample is the good one from now on: the next reload falls
+  // back to it, even when it comes before this one has every sample.
+  v.state.lastGood.reset();
   return true;
 }
 
