@@ -248,12 +248,18 @@ class Parser {
   }
 
   glm::dvec3 tuple(FileLoc* loc = nullptr) {
+    return tupleOf([&] { return number(); }, loc);
+  }
+
+  // A tuple of the numbers `element` reads.
+  template <typename Element>
+  glm::dvec3 tupleOf(Element element, FileLoc* loc = nullptr) {
     Token open = expect(Tok::LParen, "a tuple '(x, y, z)'");
     if (loc) *loc = open.loc;
     std::vector<double> v;
     if (peek().kind != Tok::RParen) {
       for (;;) {
-        v.push_back(number());
+        v.push_back(element());
         if (peek().kind == Tok::RParen) break;
         expect(Tok::Comma, "',' or ')' in tuple");
       }
@@ -263,6 +269,28 @@ class Parser {
     return glm::dvec3(v[0], v[1], v[2]);
   }
 
+  // A coordinate or distance, within kMaxCoordinate (scene_limits.h); `what` names it in the error,
+  // which is at the number.
+  double coordinate(const std::string& what) {
+    FileLoc loc;
+    std::string text;
+    double v = number(&loc, &text);
+    checkCoordinate(v, loc, what + " " + text);
+    return v;
+  }
+
+  static void checkCoordinate(double v, const FileLoc& loc, const std::string& what) {
+    static_assert(kMaxCoordinate == 1e18, "the message states the limit");
+    if (std::fabs(v) > kMaxCoordinate)
+      fail(loc, what + " is out of range: raytex renders coordinates and distances from -1e18 to 1e18 (its float "
+                       "arithmetic squares distances, which overflows from about 1.8e19)");
+  }
+
+  // A position: a tuple of coordinates.
+  glm::dvec3 position(const std::string& what, FileLoc* loc = nullptr) {
+    return tupleOf([&] { return coordinate(what + " coordinate"); }, loc);
+  }
+
   glm::vec3 color() {
     FileLoc loc;
     glm::vec3 c = glm::vec3(tuple(&loc));
@@ -270,11 +298,13 @@ class Parser {
     return c;
   }
 
-  double positive(const std::string& what) {
-    FileLoc loc;
-    std::string text;
-    double v = number(&loc, &text);
-    if (!(v > 0.0)) fail(loc, what + " must be > 0, got " + text);
+  double positive(const std::string& what, FileLoc* loc = nullptr, std::string* text = nullptr) {
+    FileLoc at;
+    std::string written;
+    double v = number(&at, &written);
+    if (!(v > 0.0)) fail(at, what + " must be > 0, got " + written);
+    if (loc) *loc = at;
+    if (text) *text = written;
     return v;
   }
 
@@ -373,10 +403,13 @@ class Parser {
     block("sphere", [&](const Token& key) {
       if (key.text == "center") {
         assign(key, seen, "sphere");
-        s.center = tuple();
+        s.center = position("sphere center");
       } else if (key.text == "radius") {
         assign(key, seen, "sphere");
-        s.radius = positive("sphere radius");
+        FileLoc loc;
+        std::string text;
+        s.radius = positive("sphere radius", &loc, &text);
+        checkCoordinate(s.radius, loc, "sphere radius " + text);
       } else {
         if (!placementStatement(key, seen, "sphere", &s.placement, &offsetLoc))
           materialStatement(key, &s.material, "sphere");
@@ -404,7 +437,7 @@ class Parser {
         p.normal = n / len;
       } else if (key.text == "distance") {
         assign(key, seen, "plane");
-        p.distance = number();
+        p.distance = coordinate("plane distance");
       } else {
         if (!placementStatement(key, seen, "plane", &p.placement, &offsetLoc))
           materialStatement(key, &p.material, "plane");
@@ -532,9 +565,9 @@ class Parser {
     block("camera", [&](const Token& key) {
       assignKnown(key, seen, "camera", {"eye", "lookat", "up", "fov"});
       if (key.text == "eye") {
-        c.eye = tuple(&eyeLoc);
+        c.eye = position("camera eye", &eyeLoc);
       } else if (key.text == "lookat") {
-        c.lookat = tuple(&lookatLoc);
+        c.lookat = position("camera lookat", &lookatLoc);
       } else if (key.text == "up") {
         c.up = tuple(&upLoc);
       } else {
@@ -603,7 +636,7 @@ class Parser {
     Seen seen;
     block("light", [&](const Token& key) {
       assignKnown(key, seen, "light", {"position", "color"});
-      if (key.text == "position") l.position = tuple();
+      if (key.text == "position") l.position = position("light position");
       else l.color = color();
       semicolon("the value of " + quote(key.text));
     });

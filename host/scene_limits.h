@@ -7,6 +7,16 @@
 
 #include <cstdint>
 
+// The largest magnitude of a coordinate or distance the scene format accepts (sphere centres and
+// radii, plane distances, the camera's eye and lookat, light positions; parser.cpp). The kernel
+// works in 32-bit floats relative to the camera and squares the distances between the scene's
+// points, and a square overflows past sqrt(FLT_MAX), about 1.8e19. Within +-1e18 per coordinate
+// two points are at most 2 sqrt(3) 1e18 = 3.5e18 apart, five times within that: objects at the
+// corners of the cube render like the float64 reference at +-1e18 and +-5e18, not at +-6e18
+// (tests/stability_float_range_test.cpp). Points further out, a plane towards its horizon, have
+// their distance to a light measured scaled down (shading.glsl).
+constexpr double kMaxCoordinate = 1e18;
+
 // Materials a scene may define (its objects may use MAX_MATERIALS of them).
 constexpr size_t kMaxMaterialDefinitions = 65536;
 

@@ -83,6 +83,9 @@ vec3 shade(Surface s, Material m, vec3 albedo, vec3 toEye) {
   for (uint i = 0u; i < lightCount(); ++i) {
     vec3 toLight = lightAt(i).position.xyz - s.p;
     float dist = length(toLight);
+    // A hit over about 1.8e19 from the light (a plane towards its horizon) squares past the
+    // float range: its distance is measured 2^64 times smaller (exact: a power of two).
+    if (isinf(dist)) dist = length(toLight * exp2(-64.0)) * exp2(64.0);
     if (!(dist > 0.0)) continue;
     vec3 l = toLight / dist;
     float nDotL = dot(s.n, l);

@@ -472,6 +472,31 @@ TEST(ParserErrors, OutOfRangeValues) {
             "t.cfg:1:40: colour components must be >= 0");
 }
 
+// Positions and distances past kMaxCoordinate (scene_limits.h): the kernel's float arithmetic
+// squares distances between them, which overflows from about 1.8e19 (a sphere at 2e19 rendered
+// unlit, at 3e19 not at all; a plane at distance 1e20 unlit). The error is at the number.
+TEST(ParserErrors, CoordinatesPastTheLimit) {
+  const std::string range =
+      " is out of range: raytex renders coordinates and distances from -1e18 to 1e18 (its float arithmetic "
+      "squares distances, which overflows from about 1.8e19)";
+  EXPECT_EQ(errorOf("sphere { center = (0, 0, 2e19); }"), "t.cfg:1:26: sphere center coordinate 2e19" + range);
+  EXPECT_EQ(errorOf("sphere { center = (-3e19, 0, 0); }"), "t.cfg:1:20: sphere center coordinate -3e19" + range);
+  EXPECT_EQ(errorOf("sphere { radius = 3e19; }"), "t.cfg:1:19: sphere radius 3e19" + range);
+  EXPECT_EQ(errorOf("plane { distance = 1e20; }"), "t.cfg:1:20: plane distance 1e20" + range);
+  EXPECT_EQ(errorOf("plane { distance = -1.000001e18; }"), "t.cfg:1:20: plane distance -1.000001e18" + range);
+  EXPECT_EQ(errorOf("camera { eye = (0, 2e18, 0); }"), "t.cfg:1:20: camera eye coordinate 2e18" + range);
+  EXPECT_EQ(errorOf("camera { lookat = (0, 0, -5e37); }"), "t.cfg:1:26: camera lookat coordinate -5e37" + range);
+  EXPECT_EQ(errorOf("light { position = (1e30, 0, 0); }"), "t.cfg:1:21: light position coordinate 1e30" + range);
+  // At the limit every value parses.
+  const Scene scene = parseSceneText(
+      "camera { eye = (-1e18, -1e18, -1e18); lookat = (1e18, 1e18, 1e18); up = (0, 1, 0); }\n"
+      "light { position = (-1e18, 1e18, -1e18); }\n"
+      "sphere { center = (1e18, 1e18, 1e18); radius = 1e18; }\nplane { normal = (0, 0, 1); distance = -1e18; }\n",
+      "t.cfg");
+  EXPECT_EQ(scene.spheres[0].radius, 1e18);
+  EXPECT_EQ(scene.planes[0].distance, -1e18);
+}
+
 TEST(ParserErrors, Camera) {
   EXPECT_EQ(errorOf("camera {\n  eye = (1, 2, 3);\n  lookat = (1, 2, 3);\n}\n"),
             "t.cfg:3:12: camera eye and lookat must differ");
