@@ -228,7 +228,10 @@ std::vector<BatchScene> prepareBatch(const RenderOptions& options, const std::ve
       mergePlan(plan, planRender(s.options, s.out.job, s.scene, true));
     } catch (const Error& e) {
       s.failure = e;
-      plan.reads.push_back({items[i].scene, "the scene file '" + items[i].scene + "'"});
+      plan.reads.push_back({items[i].scene, "the scene file"});
+    } catch (const std::bad_alloc&) {
+      s.failure = Error(ErrorKind::OutOfMemory, "out of memory reading '" + items[i].scene + "'");
+      plan.reads.push_back({items[i].scene, "the scene file"});
     }
   }
   checkPlan(plan);

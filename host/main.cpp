@@ -123,7 +123,10 @@ int runCommand(const CliArgs& cli) {
     case CliCommand::Version: puts(kRaytexVersion); break;
     case CliCommand::Devices: fputs(listDevices().c_str(), stdout); break;
     case CliCommand::Render:
-      if (cli.diff.reference.empty()) return runRender(cli.render), 0;
+      if (cli.diff.reference.empty()) {
+        runRender(cli.render);
+        break;
+      }
       runRender(withComparison(cli.render, cli.diff));
       return compareOutput(cli.render, cli.diff);
     case CliCommand::View: runViewer(cli.render); break;

@@ -111,8 +111,8 @@ std::string writeTarget(const std::string& path) {
 
 void planSceneReads(OutputPlan& plan, const Scene& scene, const std::string& label) {
   for (size_t i = 0; i < scene.files.size(); ++i)
-    plan.reads.push_back({scene.files[i], i == 0 ? label + " file" : "a file " + label + " includes"});
-  if (scene.files.empty()) plan.reads.push_back({scene.path, label + " file"});
+    plan.reads.push_back({scene.files[i], i == 0 ? "the scene file" : "a file " + label + " includes"});
+  if (scene.files.empty()) plan.reads.push_back({scene.path, "the scene file"});
   for (const Material& m : scene.materials)
     if (m.texture.kind == TextureKind::Image) plan.reads.push_back({m.texture.imagePath, "an image " + label + " uses"});
 }

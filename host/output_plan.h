@@ -30,7 +30,8 @@ struct OutputPlan {
 };
 
 // Adds the scene's files (the scene, every file it includes) and the image of every material
-// it defines to the plan's reads; `scene` names it in messages ("the scene", "the scene 'a.cfg'").
+// it defines to the plan's reads; `label` names the scene in the messages of its includes and
+// images ("the scene", "the scene 'a.cfg'"; the scene file itself is "the scene file").
 void planSceneReads(OutputPlan& plan, const Scene& scene, const std::string& label);
 
 // Appends `more`'s writes and reads to `plan`.

@@ -16,10 +16,8 @@
 #include <cmath>
 #include <deque>
 #include <filesystem>
-#include <fstream>
 #include <initializer_list>
 #include <map>
-#include <sstream>
 #include <utility>
 
 namespace fs = std::filesystem;
