@@ -20,18 +20,51 @@ std::string sizeText(const FloatImage& image) {
   return std::to_string(image.width) + "x" + std::to_string(image.height);
 }
 
-// A JSON string literal: paths may hold quotes, backslashes and control characters.
+// The length of the well-formed UTF-8 sequence that starts at s[i] (Unicode's table 3-7: no
+// overlong forms, no surrogates, nothing past U+10FFFF), or 0 where none does.
+size_t utf8SequenceLength(const std::string& s, size_t i) {
+  const unsigned char lead = static_cast<unsigned char>(s[i]);
+  if (lead < 0x80) return 1;
+  const size_t length = lead >= 0xC2 && lead <= 0xDF   ? 2
+                        : lead >= 0xE0 && lead <= 0xEF ? 3
+                        : lead >= 0xF0 && lead <= 0xF4 ? 4
+                                                       : 0;  // 80..C1 and F5..FF lead nothing
+  if (length == 0 || i + length > s.size()) return 0;
+  // The second byte's range (later bytes take 80..BF), narrowed after four leads.
+  unsigned char low = 0x80, high = 0xBF;
+  if (lead == 0xE0) low = 0xA0;   // below: overlong
+  if (lead == 0xED) high = 0x9F;  // above: surrogates
+  if (lead == 0xF0) low = 0x90;   // below: overlong
+  if (lead == 0xF4) high = 0x8F;  // above: past U+10FFFF
+  for (size_t k = 1; k < length; ++k) {
+    const unsigned char c = static_cast<unsigned char>(s[i + k]);
+    if (c < (k == 1 ? low : 0x80) || c > (k == 1 ? high : 0xBF)) return 0;
+  }
+  return length;
+}
+
+// A JSON string literal: paths may hold quotes, backslashes and control characters, and any
+// bytes; each byte that is not part of well-formed UTF-8 becomes U+FFFD (the replacement
+// character), so the JSON is always valid UTF-8.
 std::string jsonString(const std::string& s) {
   std::string out = "\"";
-  for (char c : s) {
-    if (static_cast<unsigned char>(c) < 0x20) {
+  for (size_t i = 0; i < s.size();) {
+    const size_t length = utf8SequenceLength(s, i);
+    const unsigned char c = static_cast<unsigned char>(s[i]);
+    if (length == 0) {
+      out += "\\ufffd";
+      ++i;
+      continue;
+    }
+    if (c < 0x20) {
       char buf[8];
       snprintf(buf, sizeof buf, "\\u%04x", c);
       out += buf;
-      continue;
+    } else {
+      if (c == '"' || c == '\\') out += '\\';
+      out.append(s, i, length);
     }
-    if (c == '"' || c == '\\') out += '\\';
-    out += c;
+    i += length;
   }
   return out + "\"";
 }
@@ -76,7 +109,11 @@ DiffReport compareImageFiles(const DiffOptions& options) {
   report.height = reference.image.height;
   report.threshold = options.threshold;
   report.metrics = measureImages(reference.image, test.image, options.threshold);
-  report.flipError = flipErrorMap(linearToSrgbImage(reference.image), linearToSrgbImage(test.image));
+  // The sRGB encodings a row at a time: no copy of either image.
+  const FloatImage &a = reference.image, &b = test.image;
+  report.flipError =
+      flipErrorMap(a.width, a.height, [&a](int y, int x0, int x1, float* rgb) { linearToSrgbRow(a, y, x0, x1, rgb); },
+                   [&b](int y, int x0, int x1, float* rgb) { linearToSrgbRow(b, y, x0, x1, rgb); });
   report.flip = flipMean(report.flipError);
   return report;
 }

@@ -11,8 +11,9 @@
 #include <vector>
 
 // Largest linear float RGB image diff reads for each input (12 bytes a pixel): 256 MiB, 22.4
-// Mpixel. The comparison's peak memory is about 140 bytes a pixel (280 MiB at 1920x1080), so
-// two such images take about 3 GiB.
+// Mpixel. The comparison holds the two images and the FLIP error map (4 bytes a pixel) and
+// otherwise rows: its peak is under 31 bytes a pixel, about 680 MB for two such images
+// (bench/diff.sh).
 constexpr uint64_t kDiffMaxImageBytes = uint64_t(256) << 20;
 
 struct DiffReport {

@@ -18,6 +18,7 @@
 #include <glm/vec3.hpp>
 
 #include <array>
+#include <functional>
 #include <vector>
 
 // A 0.7 m wide monitor of 3840 pixels viewed from 0.7 m: the paper's default observer.
@@ -105,6 +106,20 @@ FloatImage featureErrorMap(const FeatureMaps& reference, const FeatureMaps& test
 // The FLIP error per pixel in [0, 1], 1 channel, of two sRGB images of the same size (values
 // in [0, 1], 3 or 4 channels, the first 3 compared). Identical images give 0 everywhere.
 FloatImage flipErrorMap(const FloatImage& referenceSrgb, const FloatImage& testSrgb);
+// Writes pixels x0 .. x1 - 1 of row y (0 at the top) of an image's sRGB values, 3 floats a
+// pixel, into `rgb`.
+using SrgbRows = std::function<void(int y, int x0, int x1, float* rgb)>;
+// Columns of the tiles flipErrorMap computes one at a time.
+constexpr int kFlipTileColumns = 1024;
+// The same error map, of two width x height images given a row at a time: the stages run row by
+// row over tiles of `tileColumns` columns and `bands` bands of rows (0: one per processor
+// thread, each of at least 512 rows), the tiles on the processor threads (so the rows are read
+// from several threads at once). A tile reads its pixels and the 10 around it (the widest
+// filter's radius) once each, and holds about 2.6 kB a column of filtered rows: 2.7 MB for
+// 1024 columns, whatever the image's size. The map is the whole-image stages' to the bit, in
+// any tiles: every value comes from the same operations in the same order.
+FloatImage flipErrorMap(int width, int height, const SrgbRows& reference, const SrgbRows& test, int bands = 0,
+                        int tileColumns = kFlipTileColumns);
 // The mean of an error map (0 for an empty one).
 double flipMean(const FloatImage& error);
 

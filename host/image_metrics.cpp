@@ -1,7 +1,9 @@
 #include "image_metrics.h"
 
 #include "error.h"
+#include "float_memo.h"
 #include "image_io.h"
+#include "reference.h"
 
 #include <algorithm>
 #include <array>
@@ -33,25 +35,33 @@ double pixelDifference(const FloatImage& a, const FloatImage& b, size_t i) {
   return d;
 }
 
-// The five sums of SSIM (x, y, x^2, y^2, xy) of channel c over every run of kSsimWindow pixels
-// along x: for each row, (width - kSsimWindow + 1) sums of each.
-std::array<std::vector<double>, 5> rowWindowSums(const FloatImage& a, const FloatImage& b, int c) {
-  const int w = a.width, h = a.height, ow = w - kSsimWindow + 1;
-  std::array<std::vector<double>, 5> sums;
-  for (std::vector<double>& s : sums) s.assign(size_t(ow) * size_t(h), 0.0);
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < ow; ++x) {
-      const size_t out = size_t(y) * size_t(ow) + size_t(x);
-      for (int k = 0; k < kSsimWindow; ++k) {
-        const double u = a.at(x + k, y, c), v = b.at(x + k, y, c);
-        sums[0][out] += u;
-        sums[1][out] += v;
-        sums[2][out] += u * u;
-        sums[3][out] += v * v;
-        sums[4][out] += u * v;
-      }
+// What linearToSrgbImage makes of a linear value.
+float srgbEncoded(float v) { return std::isfinite(v) ? float(linearToSrgb(std::clamp(double(v), 0.0, 1.0))) : 0.0f; }
+using SrgbEncoder = FloatMemo<float, srgbEncoded>;
+
+// Channel c of row y, sRGB-encoded (as linearToSrgbImage encodes it) or as stored.
+void readChannelRow(const FloatImage& image, int y, int c, SrgbEncoder* encode, std::vector<double>* out) {
+  for (int x = 0; x < image.width; ++x) {
+    const float v = image.at(x, y, c);
+    (*out)[size_t(x)] = encode ? (*encode)(v) : v;
+  }
+}
+
+// The five sums of SSIM (x, y, x^2, y^2, xy) over every run of kSsimWindow pixels along one row
+// (`ow` runs): sums[q][x] for the run from x.
+void rowWindowSums(const std::vector<double>& a, const std::vector<double>& b, size_t ow, double* const sums[5]) {
+  for (size_t x = 0; x < ow; ++x) {
+    double s[5] = {0.0, 0.0, 0.0, 0.0, 0.0};
+    for (size_t k = 0; k < size_t(kSsimWindow); ++k) {
+      const double u = a[x + k], v = b[x + k];
+      s[0] += u;
+      s[1] += v;
+      s[2] += u * u;
+      s[3] += v * v;
+      s[4] += u * v;
     }
-  return sums;
+    for (size_t q = 0; q < 5; ++q) sums[q][x] = s[q];
+  }
 }
 
 // The structural similarity of one window from its means of x, y, x^2, y^2 and xy, with
@@ -63,24 +73,61 @@ double windowSsim(double ux, double uy, double uxx, double uyy, double uxy) {
   return (2.0 * ux * uy + c1) * (2.0 * vxy + c2) / ((ux * ux + uy * uy + c1) * (vx + vy + c2));
 }
 
-// The sum of the structural similarity over the windows of channel c: the row sums added
-// along y, one row of windows at a time.
-double channelSsimSum(const FloatImage& a, const FloatImage& b, int c) {
-  const std::array<std::vector<double>, 5> rows = rowWindowSums(a, b, c);
-  const size_t ow = size_t(a.width - kSsimWindow + 1), oh = size_t(a.height - kSsimWindow + 1);
+// The row sums of the last kSsimWindow rows of a channel, row y in slot y % kSsimWindow.
+struct SsimRowRing {
+  size_t ow;
+  std::array<std::vector<double>, 5> sums;  // kSsimWindow rows of ow each
+  explicit SsimRowRing(size_t windows) : ow(windows) {
+    for (std::vector<double>& s : sums) s.assign(size_t(kSsimWindow) * ow, 0.0);
+  }
+  double* at(size_t q, int y) { return &sums[q][size_t(y % kSsimWindow) * ow]; }
+};
+
+// Adds to `sum`, one after another, the structural similarity of the windows whose top row is
+// `top`: the row sums of rows top .. top + kSsimWindow - 1 added along y.
+void addWindowRowSsim(SsimRowRing& ring, int top, std::array<std::vector<double>, 5>& means, double* sum) {
   const double np = kSsimWindow * kSsimWindow;
-  std::array<std::vector<double>, 5> means;
-  double sum = 0.0;
-  for (size_t y = 0; y < oh; ++y) {
-    for (size_t q = 0; q < 5; ++q) {
-      means[q].assign(ow, 0.0);
-      for (size_t k = 0; k < size_t(kSsimWindow); ++k)
-        for (size_t x = 0; x < ow; ++x) means[q][x] += rows[q][(y + k) * ow + x];
-      for (double& m : means[q]) m /= np;
+  for (size_t q = 0; q < 5; ++q) {
+    means[q].assign(ring.ow, 0.0);
+    for (int k = 0; k < kSsimWindow; ++k) {
+      const double* row = ring.at(q, top + k);
+      for (size_t x = 0; x < ring.ow; ++x) means[q][x] += row[x];
     }
-    for (size_t x = 0; x < ow; ++x) sum += windowSsim(means[0][x], means[1][x], means[2][x], means[3][x], means[4][x]);
+    for (double& m : means[q]) m /= np;
+  }
+  for (size_t x = 0; x < ring.ow; ++x) *sum += windowSsim(means[0][x], means[1][x], means[2][x], means[3][x], means[4][x]);
+}
+
+// The sum of the structural similarity over the windows of channel c, a row at a time: each
+// row's window sums are kept for kSsimWindow rows, then added along y.
+double channelSsimSum(const FloatImage& a, const FloatImage& b, int c, bool encode) {
+  const size_t ow = size_t(a.width - kSsimWindow + 1);
+  SsimRowRing ring(ow);
+  std::array<std::vector<double>, 5> means;
+  std::vector<double> u(size_t(a.width)), v(size_t(a.width));
+  SrgbEncoder encoder;
+  double sum = 0.0;
+  for (int y = 0; y < a.height; ++y) {
+    readChannelRow(a, y, c, encode ? &encoder : nullptr, &u);
+    readChannelRow(b, y, c, encode ? &encoder : nullptr, &v);
+    double* const sums[5] = {ring.at(0, y), ring.at(1, y), ring.at(2, y), ring.at(3, y), ring.at(4, y)};
+    rowWindowSums(u, v, ow, sums);
+    if (y >= kSsimWindow - 1) addWindowRowSsim(ring, y - (kSsimWindow - 1), means, &sum);
   }
   return sum;
+}
+
+// structuralSimilarity of a and b as stored, or of their sRGB encodings; the channels on
+// threads of their own.
+double ssimOf(const FloatImage& a, const FloatImage& b, bool encode) {
+  requireComparable(a, b);
+  if (a.width < kSsimWindow || a.height < kSsimWindow) return std::numeric_limits<double>::quiet_NaN();
+  std::array<double, 3> channelSums{};
+  forEachRowInParallel(colorChannels(a), 0, [&](int c) { channelSums[size_t(c)] = channelSsimSum(a, b, c, encode); });
+  double sum = 0.0;
+  for (int c = 0; c < colorChannels(a); ++c) sum += channelSums[size_t(c)];
+  const double windows = double(a.width - kSsimWindow + 1) * double(a.height - kSsimWindow + 1);
+  return sum / (windows * colorChannels(a));
 }
 
 void clampToUnit(FloatImage& image) {
@@ -111,14 +158,7 @@ double peakSignalToNoise(double rmse) {
   return -20.0 * std::log10(rmse);
 }
 
-double structuralSimilarity(const FloatImage& aSrgb, const FloatImage& bSrgb) {
-  requireComparable(aSrgb, bSrgb);
-  if (aSrgb.width < kSsimWindow || aSrgb.height < kSsimWindow) return std::numeric_limits<double>::quiet_NaN();
-  double sum = 0.0;
-  for (int c = 0; c < colorChannels(aSrgb); ++c) sum += channelSsimSum(aSrgb, bSrgb, c);
-  const double windows = double(aSrgb.width - kSsimWindow + 1) * double(aSrgb.height - kSsimWindow + 1);
-  return sum / (windows * colorChannels(aSrgb));
-}
+double structuralSimilarity(const FloatImage& aSrgb, const FloatImage& bSrgb) { return ssimOf(aSrgb, bSrgb, false); }
 
 double maxChannelDifference(const FloatImage& a, const FloatImage& b) {
   requireComparable(a, b);
@@ -164,9 +204,15 @@ FloatImage linearToSrgbImage(const FloatImage& linear) {
   for (size_t i = 0; i < pixelCount(linear); ++i)
     for (int c = 0; c < colorChannels(linear); ++c) {
       float& v = out.pixels[i * size_t(out.channels) + size_t(c)];
-      v = std::isfinite(v) ? float(linearToSrgb(std::clamp(double(v), 0.0, 1.0))) : 0.0f;
+      v = srgbEncoded(v);
     }
   return out;
+}
+
+void linearToSrgbRow(const FloatImage& linear, int y, int x0, int x1, float* rgb) {
+  thread_local SrgbEncoder srgbEncoded;
+  for (int x = x0; x < x1; ++x)
+    for (int c = 0; c < 3; ++c) rgb[size_t(x - x0) * 3 + size_t(c)] = srgbEncoded(linear.at(x, y, c));
 }
 
 void clampForComparison(LinearImage& a, LinearImage& b) {
@@ -179,7 +225,7 @@ ImageMetrics measureImages(const FloatImage& reference, const FloatImage& test, 
   ImageMetrics m;
   m.rmse = rootMeanSquareError(reference, test);
   m.psnr = peakSignalToNoise(m.rmse);
-  m.ssim = structuralSimilarity(linearToSrgbImage(reference), linearToSrgbImage(test));
+  m.ssim = ssimOf(reference, test, true);
   m.maxDifference = maxChannelDifference(reference, test);
   m.shareOver = shareOverThreshold(reference, test, threshold);
   return m;

@@ -20,7 +20,9 @@ double peakSignalToNoise(double rmse);
 // in [0, 1], as scikit-image's structural_similarity computes it with its defaults: a
 // kSsimWindow x kSsimWindow uniform window, sample covariances (N - 1), K1 = 0.01, K2 = 0.03,
 // data range 1, averaged over every window wholly inside the image and over the channels.
-// NaN for an image narrower or lower than the window.
+// NaN for an image narrower or lower than the window. Computed a row at a time (the window
+// sums of the last kSsimWindow rows kept, 280 bytes a column per channel), each channel on a
+// thread of its own.
 double structuralSimilarity(const FloatImage& aSrgb, const FloatImage& bSrgb);
 // The largest absolute channel difference.
 double maxChannelDifference(const FloatImage& a, const FloatImage& b);
@@ -37,11 +39,15 @@ FloatImage rgbFloatImage(const float* rgba, int width, int height);
 
 // Linear values clamped to [0, 1] and sRGB-encoded, in [0, 1] (non-finite values become 0).
 FloatImage linearToSrgbImage(const FloatImage& linear);
+// Pixels x0 .. x1 - 1 of row y of linearToSrgbImage(linear), their first 3 channels (3 floats
+// a pixel into `rgb`), without the copy of the image: the rows flipErrorMap reads.
+void linearToSrgbRow(const FloatImage& linear, int y, int x0, int x1, float* rgb);
 // When either image is of low dynamic range, clamps both to [0, 1]: an HDR value above 1 and
 // the 1 an LDR file stores for it are the same pixel on a display.
 void clampForComparison(LinearImage& a, LinearImage& b);
 
-// Every measure of `test` against `reference` (linear), the share counted over `threshold`.
+// Every measure of `test` against `reference` (linear), the share counted over `threshold`;
+// the SSIM that of linearToSrgbImage of each, encoded a row at a time without the copies.
 struct ImageMetrics {
   double rmse = 0.0;
   double psnr = 0.0;  // +infinity when the images are equal

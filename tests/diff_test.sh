@@ -94,6 +94,25 @@ r = json.load(sys.stdin)
 assert r["psnr"] is None and r["rmse"] == 0 and r["flip"] == 0 and r["ssim"] == 1, r
 ' <"$tmp/equal.json"
 
+# --json is valid UTF-8 whatever bytes the paths hold: well-formed UTF-8 is kept, each other byte
+# becomes U+FFFD (a lone FF, a surrogate's encoding, an overlong '/', a sequence cut short, a
+# code point past U+10FFFF). Python decodes the output strictly.
+stems=(bad e smile surrogate overlong short past)
+bytes=($'\xff' $'\xc3\xa9' $'\xf0\x9f\x98\x80' $'\xed\xa0\x80' $'\xc0\xaf' $'\xe2\x82' $'\xf4\x90\x80\x80')
+for i in "${!stems[@]}"; do cp "$a" "$tmp/${stems[$i]}${bytes[$i]}.png"; done
+for pair in "0 1" "2 3" "4 5" "6 0"; do
+  read -r i j <<<"$pair"
+  "$raytex" diff "$tmp/${stems[$i]}${bytes[$i]}.png" "$tmp/${stems[$j]}${bytes[$j]}.png" --json >"$tmp/bytes.json"
+  check "json-utf8-${stems[$i]}-${stems[$j]}" python3 -c '
+import json, sys
+want = {"bad": "\ufffd", "e": "\u00e9", "smile": "\U0001f600", "surrogate": 3 * "\ufffd", "overlong": 2 * "\ufffd",
+        "short": 2 * "\ufffd", "past": 4 * "\ufffd"}
+r = json.loads(sys.stdin.buffer.read().decode("utf-8"))  # strict: invalid UTF-8 raises
+for key, stem in (("a", sys.argv[2]), ("b", sys.argv[3])):
+  assert r[key] == sys.argv[1] + "/" + stem + want[stem] + ".png", (key, r[key])
+' "$tmp" "${stems[$i]}" "${stems[$j]}" <"$tmp/bytes.json"
+done
+
 # --heatmap: a PNG of the inputs' size, written atomically (no temporary file left), that raytex
 # reads back.
 expect heatmap 0 '^FLIP ' -- "$raytex" diff "$a" "$b" --heatmap "$tmp/heat.png"

@@ -6,7 +6,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <random>
 #include <string>
 
@@ -219,6 +221,57 @@ TEST(Flip, ErrorsLieInZeroToOne) {
     EXPECT_GE(e, 0.0f);
     EXPECT_LE(e, 1.0f);
   }
+}
+
+// The error map composed of the whole-image stages, as flipErrorMap computed it before it ran
+// a row at a time.
+FloatImage stagesErrorMap(const FloatImage& a, const FloatImage& b) {
+  const FloatImage ya = srgbToYcxcz(a), yb = srgbToYcxcz(b);
+  const FloatImage color = colorErrorMap(ycxczToHuntLab(filterCsf(ya, kFlipPixelsPerDegree)),
+                                         ycxczToHuntLab(filterCsf(yb, kFlipPixelsPerDegree)));
+  const FloatImage feature =
+      featureErrorMap(detectFeatures(ya, kFlipPixelsPerDegree), detectFeatures(yb, kFlipPixelsPerDegree));
+  FloatImage error = blank(a.width, a.height, 1, 0.0f);
+  for (size_t i = 0; i < error.pixels.size(); ++i)
+    error.pixels[i] = float(combineFlipErrors(color.pixels[i], feature.pixels[i]));
+  return error;
+}
+
+SrgbRows rowsOf(const FloatImage& image) {
+  return [&image](int y, int x0, int x1, float* rgb) {
+    for (int x = x0; x < x1; ++x)
+      for (int c = 0; c < 3; ++c) rgb[(x - x0) * 3 + c] = image.at(x, y, c);
+  };
+}
+
+// Row by row, in any bands and tiles of columns (each starting its filters 10 rows above and
+// reading 10 columns either side), the map is the stages' to the bit: on sizes under a filter's
+// width, at the tiles' edges, and with 8-bit values (which repeat, as the sRGB memo sees them)
+// or any.
+TEST(Flip, RowsGiveTheStagesMapToTheBitInAnyBands) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<float> u(0.0f, 1.0f);
+  std::uniform_int_distribution<int> code(0, 255);
+  const int sizes[][2] = {{1, 1}, {9, 5}, {30, 21}, {23, 64}, {17, 130}};
+  for (const auto& size : sizes)
+    for (bool eightBit : {false, true}) {
+      FloatImage a = blank(size[0], size[1], 3, 0.0f), b = a;
+      for (size_t i = 0; i < a.pixels.size(); ++i) {
+        a.pixels[i] = eightBit ? code(rng) / 255.0f : u(rng);
+        b.pixels[i] = std::clamp(a.pixels[i] + (eightBit ? code(rng) / 2550.0f : 0.1f * u(rng)), 0.0f, 1.0f);
+      }
+      const FloatImage want = stagesErrorMap(a, b);
+      for (auto [bands, columns] : {std::pair{1, kFlipTileColumns}, std::pair{2, 1}, std::pair{3, 5}, std::pair{7, 8},
+                                    std::pair{0, 11}, std::pair{1, 30}}) {
+        const FloatImage got = flipErrorMap(a.width, a.height, rowsOf(a), rowsOf(b), bands, columns);
+        ASSERT_EQ(got.pixels.size(), want.pixels.size());
+        EXPECT_EQ(std::memcmp(got.pixels.data(), want.pixels.data(), want.pixels.size() * sizeof(float)), 0)
+            << size[0] << "x" << size[1] << (eightBit ? " 8-bit" : "") << ", " << bands << " bands of tiles "
+            << columns << " wide";
+      }
+      const FloatImage whole = flipErrorMap(a, b);
+      EXPECT_EQ(std::memcmp(whole.pixels.data(), want.pixels.data(), want.pixels.size() * sizeof(float)), 0);
+    }
 }
 
 // The reference implementation (FLIP 1.6, LDR, -ppd 67) on the pairs in tests/golden/flip: its

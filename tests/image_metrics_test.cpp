@@ -3,6 +3,7 @@
 // here and against scikit-image's values, the threshold share on a constructed pair, and the
 // clamping of low-dynamic-range inputs.
 #include "cli.h"
+#include "float_memo.h"
 #include "image_io.h"
 #include "image_metrics.h"
 #include "image_read.h"
@@ -12,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <random>
 #include <string>
 
@@ -177,6 +179,57 @@ TEST(ImageMetrics, LinearToSrgbClampsAndEncodes) {
   EXPECT_NEAR(srgb.at(1, 0, 0), 1.0, 1e-6);
   EXPECT_EQ(srgb.at(1, 0, 1), 0.0f);
   EXPECT_EQ(srgb.at(1, 0, 2), 0.0f);
+}
+
+TEST(ImageMetrics, LinearToSrgbRowIsARowOfTheImage) {
+  FloatImage linear = randomImage(5, 3, 9);
+  set(linear, 1, 1, 2.0f, -1.0f, NAN);
+  set(linear, 4, 2, INFINITY, 1e-9f, 0.0031308f);
+  for (int channels : {3, 4}) {
+    FloatImage image = linear;
+    if (channels == 4) {  // alpha after each pixel's colour: not encoded, not in the row
+      image.channels = 4;
+      image.pixels.clear();
+      for (size_t i = 0; i < linear.pixels.size(); i += 3)
+        image.pixels.insert(image.pixels.end(), {linear.pixels[i], linear.pixels[i + 1], linear.pixels[i + 2], 0.5f});
+    }
+    const FloatImage srgb = linearToSrgbImage(image);
+    std::vector<float> row(size_t(image.width) * 3);
+    for (int y = 0; y < image.height; ++y)
+      for (auto [x0, x1] : {std::pair{0, 5}, std::pair{1, 4}, std::pair{3, 5}}) {
+        linearToSrgbRow(image, y, x0, x1, row.data());
+        for (int x = x0; x < x1; ++x)
+          for (int c = 0; c < 3; ++c)
+            EXPECT_EQ(row[size_t(x - x0) * 3 + size_t(c)], srgb.at(x, y, c)) << x << "," << y;
+      }
+  }
+}
+
+double plusOne(float v) { return double(v) + 1.0; }
+
+// Every result the memo gives is the function's, through collisions (more values than
+// entries), repeats, NaN (its start key among them), infinities and signed zeros.
+TEST(FloatMemo, GivesTheFunctionsResultsToTheBit) {
+  FloatMemo<double, plusOne> memo;
+  std::mt19937 rng(3);
+  std::uniform_int_distribution<uint32_t> bits(0, 0xffffffffu);
+  std::vector<float> values = {0.0f, -0.0f, INFINITY, -INFINITY, NAN, 1.0f};
+  for (uint32_t key : {0x7fc00001u, 0x7fc00000u, 0xffc00001u}) {
+    float v;
+    std::memcpy(&v, &key, sizeof v);
+    values.push_back(v);
+  }
+  for (int i = 0; i < 20000; ++i) {
+    const uint32_t b = bits(rng);
+    float v;
+    std::memcpy(&v, &b, sizeof v);
+    values.push_back(v);
+  }
+  for (int round = 0; round < 2; ++round)
+    for (float v : values) {
+      const double got = memo(v), want = plusOne(v);
+      EXPECT_EQ(std::memcmp(&got, &want, sizeof got), 0) << v;
+    }
 }
 
 TEST(ImageMetrics, MeasureImagesGathersEveryMeasure) {

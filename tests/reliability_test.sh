@@ -94,6 +94,17 @@ if [ "${RAYTEX_SANITIZED:-0}" != 1 ]; then
   yes 'sphere{}' | head -n 5000000 >many.cfg
   expect sphere-limit-early 2 '^many.cfg:131073:1: sphere 131073 is over the limit: raytex renders at most 131072 spheres$' -- \
     bash -c 'ulimit -v 600000; exec "$@"' _ "$raytex" render many.cfg "${small[@]}" -o many.png
+  # diff of two 2000x2000 images (4 Mpixel) within 300 MB of address space: the two images, the
+  # FLIP map and rows (about 29 bytes a pixel), not copies of the images per stage.
+  python3 -c '
+import array, sys
+w = h = 2000
+for name, shift in (("wide-a.pfm", 0.0), ("wide-b.pfm", 0.1)):
+    row = array.array("f", [v for x in range(w) for v in (x / w, shift + (x % 7) / 10, 0.5)]).tobytes()
+    with open(name, "wb") as f:
+        f.write(b"PF\n%d %d\n-1.0\n" % (w, h) + row * h)
+'
+  expect diff-memory 0 '^RMSE ' -- bash -c 'ulimit -v 300000; exec "$@"' _ "$raytex" diff wide-a.pfm wide-b.pfm
 fi
 # Include fan-out: 10 includes a file, 16 deep, stops at the 1025th include.
 for d in $(seq 0 15); do
