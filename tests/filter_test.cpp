@@ -38,7 +38,6 @@
 
 namespace {
 
-const std::string kSourceDir = RAYTEX_SOURCE_DIR;
 
 // Image size. At 128x96 one pixel spans 0.012 rad, so the footprint along the view is
 // 0.012 t^2 units at distance t (0.3 at the near limit 5, 1.2 at the band's start 10).

@@ -22,7 +22,7 @@ double sum(const std::vector<double>& v) {
   return s;
 }
 
-FloatImage blank(int w, int h, int channels, float value) {
+FloatImage blankImage(int w, int h, int channels, float value) {
   FloatImage image;
   image.width = w;
   image.height = h;
@@ -34,7 +34,7 @@ FloatImage blank(int w, int h, int channels, float value) {
 // An 8-bit PNG's values / 255: the sRGB input the reference implementation reads from it.
 FloatImage srgbOf(const std::string& name) {
   const ImageRGBA8 png = loadImage(std::string(RAYTEX_SOURCE_DIR) + "/tests/golden/flip/" + name);
-  FloatImage image = blank(png.width, png.height, 3, 0.0f);
+  FloatImage image = blankImage(png.width, png.height, 3, 0.0f);
   for (size_t i = 0; i < size_t(png.width) * png.height; ++i)
     for (size_t c = 0; c < 3; ++c) image.pixels[i * 3 + c] = png.pixels[i * 4 + c] / 255.0f;
   return image;
@@ -118,7 +118,7 @@ TEST(Flip, PointKernelRatioWithinOneSign) {
 TEST(Flip, SeparableFilterEqualsTheDenseConvolution) {
   std::mt19937 rng(7);
   std::uniform_real_distribution<float> u(0.0f, 1.0f);
-  FloatImage image = blank(23, 17, 2, 0.0f);
+  FloatImage image = blankImage(23, 17, 2, 0.0f);
   for (float& v : image.pixels) v = u(rng);
   const SeparableKernel kernel = csfKernel(CsfChannel::BlueYellow, 67.0);
   const std::vector<double> dense = denseKernel(kernel);
@@ -185,11 +185,11 @@ TEST(Flip, CombinationRaisesColourErrorToOneMinusFeatureError) {
 }
 
 TEST(Flip, FeaturesAreZeroOnAFlatImageAndPositiveOnAnEdge) {
-  const FeatureMaps flat = detectFeatures(srgbToYcxcz(blank(40, 30, 3, 0.6f)), 67.0);
+  const FeatureMaps flat = detectFeatures(srgbToYcxcz(blankImage(40, 30, 3, 0.6f)), 67.0);
   for (float v : flat.edges.pixels) EXPECT_NEAR(v, 0.0, 1e-6);
   for (float v : flat.points.pixels) EXPECT_NEAR(v, 0.0, 1e-6);
 
-  FloatImage step = blank(40, 30, 3, 0.0f);  // black left half, white right half
+  FloatImage step = blankImage(40, 30, 3, 0.0f);  // black left half, white right half
   for (int y = 0; y < 30; ++y)
     for (int x = 20; x < 40; ++x)
       for (int c = 0; c < 3; ++c) step.pixels[(size_t(y) * 40 + x) * 3 + c] = 1.0f;
@@ -211,7 +211,7 @@ TEST(Flip, IdenticalImagesGiveExactlyZero) {
 }
 
 TEST(Flip, ErrorsLieInZeroToOne) {
-  FloatImage a = blank(24, 24, 3, 0.0f), b = blank(24, 24, 3, 1.0f);
+  FloatImage a = blankImage(24, 24, 3, 0.0f), b = blankImage(24, 24, 3, 1.0f);
   for (int i = 0; i < 24 * 24; ++i) {
     a.pixels[size_t(i) * 3 + 1] = 1.0f;  // green against white, then blue against green
     b.pixels[size_t(i) * 3 + 0] = 0.0f;
@@ -231,7 +231,7 @@ FloatImage stagesErrorMap(const FloatImage& a, const FloatImage& b) {
                                          ycxczToHuntLab(filterCsf(yb, kFlipPixelsPerDegree)));
   const FloatImage feature =
       featureErrorMap(detectFeatures(ya, kFlipPixelsPerDegree), detectFeatures(yb, kFlipPixelsPerDegree));
-  FloatImage error = blank(a.width, a.height, 1, 0.0f);
+  FloatImage error = blankImage(a.width, a.height, 1, 0.0f);
   for (size_t i = 0; i < error.pixels.size(); ++i)
     error.pixels[i] = float(combineFlipErrors(color.pixels[i], feature.pixels[i]));
   return error;
@@ -255,7 +255,7 @@ TEST(Flip, RowsGiveTheStagesMapToTheBitInAnyBands) {
   const int sizes[][2] = {{1, 1}, {9, 5}, {30, 21}, {23, 64}, {17, 130}};
   for (const auto& size : sizes)
     for (bool eightBit : {false, true}) {
-      FloatImage a = blank(size[0], size[1], 3, 0.0f), b = a;
+      FloatImage a = blankImage(size[0], size[1], 3, 0.0f), b = a;
       for (size_t i = 0; i < a.pixels.size(); ++i) {
         a.pixels[i] = eightBit ? code(rng) / 255.0f : u(rng);
         b.pixels[i] = std::clamp(a.pixels[i] + (eightBit ? code(rng) / 2550.0f : 0.1f * u(rng)), 0.0f, 1.0f);
@@ -319,7 +319,7 @@ TEST(Flip, HeatmapRunsFromDarkPurpleToPaleYellowGettingLighter) {
     EXPECT_GT(luma, previous) << i;
     previous = luma;
   }
-  FloatImage error = blank(5, 3, 1, 0.25f);
+  FloatImage error = blankImage(5, 3, 1, 0.25f);
   const ImageRGBA8 map = flipHeatmap(error);
   EXPECT_EQ(map.width, 5);
   EXPECT_EQ(map.height, 3);

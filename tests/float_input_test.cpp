@@ -8,6 +8,7 @@
 #include "image_read.h"
 #include "support/band_images.h"
 #include "support/files.h"
+#include "support/format.h"
 
 #include <gtest/gtest.h>
 
@@ -29,11 +30,6 @@ namespace {
 
 constexpr uint64_t kBudget = uint64_t(1) << 30;
 
-uint32_t bitsOf(float v) {
-  uint32_t bits;
-  memcpy(&bits, &v, 4);
-  return bits;
-}
 
 // The message of the ImageInputError that `read` throws for `path`; "" if it reads the file.
 std::string readError(FloatImage (*read)(const std::string&, uint64_t), const fs::path& path,

@@ -13,7 +13,6 @@
 
 namespace {
 
-const std::string kSourceDir = RAYTEX_SOURCE_DIR;
 
 TEST(GpuScene, CourseSceneUploadsOnlyTheMaterialsItUses) {
   Scene scene = parseSceneFile(kSourceDir + "/scenes/textures.cfg");

@@ -24,7 +24,6 @@
 
 namespace {
 
-const std::string kSourceDir = RAYTEX_SOURCE_DIR;
 
 // Ambient light and ambient coefficient 1, no lights: every pixel is the texture colour.
 std::string flatMaterial(const std::string& image) {

@@ -25,7 +25,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const std::string kSourceDir = RAYTEX_SOURCE_DIR;
 const std::string kHostile = kSourceDir + "/tests/malformed/images/";
 
 // The message of the ImageInputError that loading `path` throws.

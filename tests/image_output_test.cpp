@@ -6,6 +6,7 @@
 #include "output_file.h"
 #include "support/band_images.h"
 #include "support/files.h"
+#include "support/format.h"
 
 #include <gtest/gtest.h>
 
@@ -37,13 +38,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-size_t entries(const fs::path& dir) { return size_t(std::distance(fs::directory_iterator(dir), {})); }
 
-uint32_t bitsOf(float v) {
-  uint32_t bits;
-  memcpy(&bits, &v, 4);
-  return bits;
-}
 
 // The float whose little-endian bytes start at `at`.
 float littleEndianFloat(const std::string& bytes, size_t at) {
@@ -203,7 +198,7 @@ TEST(ImageOutput, PfmHasItsHeaderAndItsRowsBottomUp) {
           EXPECT_EQ(bitsOf(got), bitsOf(want)) << f.path << " row " << r << " x " << x << " c " << c;
         }
   }
-  EXPECT_EQ(entries(dir), 4u);
+  EXPECT_EQ(entryCount(dir), 4u);
 }
 
 // Reads what a FIFO gets until its writer closes it, on a thread of its own.
@@ -473,9 +468,9 @@ TEST(ImageOutput, DestroyedBeforeFinishItLeavesNoFileAndNoTemporary) {
     {
       ImageOutput output(bandSpec((dir / name).string(), format, image, passes));
       output.writeBand(0, 3, image.rgba.data(), {image.passes[0].data(), image.passes[1].data()});
-      EXPECT_EQ(entries(dir), 2u) << name;  // the files being written have no names (O_TMPFILE)
+      EXPECT_EQ(entryCount(dir), 2u) << name;  // the files being written have no names (O_TMPFILE)
     }
-    EXPECT_EQ(entries(dir), 2u) << name;
+    EXPECT_EQ(entryCount(dir), 2u) << name;
     EXPECT_EQ(readFile(dir / name), "old") << name;
     EXPECT_EQ(readFile(dir / "out.normal.pfm"), "old pass") << name;
   }
@@ -499,7 +494,7 @@ TEST(ImageOutput, RowsMissingOrWrittenTwiceAreRefusedAndNothingIsWritten) {
     EXPECT_EQ(kindOf([&] { output.writeBand(5, 2, image.rgba.data(), {}); }), ErrorKind::Internal) << name;
     EXPECT_EQ(kindOf([&] { output.finish(); }), ErrorKind::Internal) << name;
   }
-  EXPECT_EQ(entries(dir), 0u);
+  EXPECT_EQ(entryCount(dir), 0u);
 }
 
 // Named temporaries (as where the file system refuses O_TMPFILE): the signal handler removes
@@ -513,12 +508,12 @@ TEST(ImageOutput, ASignalRemovesEveryTemporaryOfTheImage) {
     signal(SIGTERM, SIG_DFL);
     setenv("RAYTEX_TEST_NAMED_TEMP", "1", 1);
     ImageOutput output(bandSpec((dir / "out.png").string(), OutputFormat::Png, image, passes));
-    _exit(entries(dir) == 4 && raise(SIGTERM) == 0 ? 0 : 3);
+    _exit(entryCount(dir) == 4 && raise(SIGTERM) == 0 ? 0 : 3);
   }
   int status = 0;
   waitpid(child, &status, 0);
   EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGTERM) << "status " << status;
-  EXPECT_EQ(entries(dir), 0u);
+  EXPECT_EQ(entryCount(dir), 0u);
 }
 
 // The pass files are put in place first and the image last: when one cannot be, the files this
@@ -534,7 +529,7 @@ TEST(ImageOutput, AFailedPublishRemovesThePassesAndKeepsTheOlderImage) {
   EXPECT_THROW(output.finish(), IoError);
   EXPECT_FALSE(fs::exists(dir / "out.normal.pfm"));
   EXPECT_EQ(readFile(dir / "out.png"), "old");
-  EXPECT_EQ(entries(dir), 2u);
+  EXPECT_EQ(entryCount(dir), 2u);
 }
 
 TEST(ImageOutput, PassFilesAreNamedAfterTheStem) {
@@ -603,18 +598,18 @@ TEST(OutputFile, WritesAtOffsetsAndLeavesNothingUncommitted) {
     file.writeAt(4, tail, 2);
     file.write(head, 2);
     file.writeAt(2, head, 2);
-    EXPECT_EQ(entries(dir), 1u);  // the file being written has no name until commit (O_TMPFILE)
+    EXPECT_EQ(entryCount(dir), 1u);  // the file being written has no name until commit (O_TMPFILE)
     EXPECT_EQ(readFile(dir / "out.bin"), "old");
     file.commit();
   }
   EXPECT_EQ(readFile(dir / "out.bin"), "ababyz");
-  EXPECT_EQ(entries(dir), 1u);
+  EXPECT_EQ(entryCount(dir), 1u);
   {
     OutputFile file((dir / "out.bin").string());
     file.write(reinterpret_cast<const uint8_t*>("new"), 3);
   }
   EXPECT_EQ(readFile(dir / "out.bin"), "ababyz");
-  EXPECT_EQ(entries(dir), 1u);
+  EXPECT_EQ(entryCount(dir), 1u);
 }
 
 }  // namespace

@@ -22,7 +22,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const std::string kSourceDir = RAYTEX_SOURCE_DIR;
 
 // Ambient light and ambient coefficient 1, no lights: every pixel is the texture colour.
 std::string flatImage(const std::string& name, const std::string& file, const std::string& wrap = "repeat") {
@@ -30,7 +29,7 @@ std::string flatImage(const std::string& name, const std::string& file, const st
          " texture = image { file = \"" + file + "\"; wrap = " + wrap + "; }; }\n";
 }
 
-Scene sceneFromText(const std::string& text) {
+Scene sizeTestScene(const std::string& text) {
   return parseSceneText("ambient_light = (1, 1, 1);\nbackground = (0.5, 0.5, 0.5);\n" + text,
                         kSourceDir + "/scenes/image_size_test.cfg");
 }
@@ -53,7 +52,7 @@ TEST_F(ImageSizeTest, AnObjectsPixelsDoNotDependOnOtherImages) {
   fs::path dir = freshTempDir("image_size");
   fs::copy_file(kSourceDir + "/textures/uv_grid.png", dir / "uv_grid_copy.png");
   auto scene = [&](const std::string& other) {
-    return sceneFromText(flatImage("grid", "../textures/uv_grid.png") + flatImage("other", other) +
+    return sizeTestScene(flatImage("grid", "../textures/uv_grid.png") + flatImage("other", other) +
                          "camera { eye = (0, 1.5, 7); lookat = (0, 0, 0); up = (0, 1, 0); fov = 45; }\n"
                          "sphere { center = (-1.2, 0, 0); radius = 1; grid; }\n"
                          "sphere { center = (1.2, 0, 0); radius = 1; other; }\n"
@@ -100,13 +99,13 @@ class WrapTest : public RenderTest {
 TEST_F(WrapTest, ClampShowsTheImageOnceOnAPlane) {
   const std::string floor = flatImage("decal", "../textures/uv_grid.png", "clamp") +
                             "plane { normal = (0, 1, 0); distance = 0; tex_scale = 2; decal; }\n";
-  Scene nearDecal = sceneFromText(floor + "camera { eye = (1, 4, 6); lookat = (1, 0, 1); up = (0, 1, 0); fov = 60; }\n");
+  Scene nearDecal = sizeTestScene(floor + "camera { eye = (1, 4, 6); lookat = (1, 0, 1); up = (0, 1, 0); fov = 60; }\n");
   EXPECT_LT(worstAgainstReference(nearDecal, 128, 96), 0.02);
   // Tile (4096, 0) and its neighbours: every texel there is an edge texel of the image.
-  Scene farTile = sceneFromText(floor + "camera { eye = (8193, 3, 1); lookat = (8193, 0, 0.9); up = (0, 1, 0); fov = 60; }\n");
+  Scene farTile = sizeTestScene(floor + "camera { eye = (8193, 3, 1); lookat = (8193, 0, 0.9); up = (0, 1, 0); fov = 60; }\n");
   EXPECT_LT(worstAgainstReference(farTile, 128, 96), 0.02);
   // And the same with wrap = repeat (default) there: the image, tiled.
-  Scene repeated = sceneFromText(flatImage("tiled", "../textures/uv_grid.png") +
+  Scene repeated = sizeTestScene(flatImage("tiled", "../textures/uv_grid.png") +
                                  "plane { normal = (0, 1, 0); distance = 0; tex_scale = 2; tiled; }\n"
                                  "camera { eye = (8193, 3, 1); lookat = (8193, 0, 0.9); up = (0, 1, 0); fov = 60; }\n");
   EXPECT_LT(worstAgainstReference(repeated, 128, 96), 0.02);
@@ -120,7 +119,7 @@ TEST_F(WrapTest, ClampDoesNotWrapAcrossASpheresSeam) {
   for (int y = 0; y < 2; ++y)
     for (uint8_t c : {255, 0, 0, 255, 0, 255, 0, 255, 255, 255, 255, 255, 0, 0, 255, 255}) columns.pixels.push_back(c);
   ASSERT_NO_THROW(writePngAtomic((dir / "columns.png").string(), columns));
-  Scene scene = sceneFromText(flatImage("decal", (dir / "columns.png").string(), "clamp") +
+  Scene scene = sizeTestScene(flatImage("decal", (dir / "columns.png").string(), "clamp") +
                               "camera { eye = (-4, 0.5, 0); lookat = (0, 0, 0); up = (0, 1, 0); fov = 40; }\n"
                               "sphere { center = (0, 0, 0); radius = 1; decal; }\n");
   EXPECT_LT(worstAgainstReference(scene, 96, 96), 0.02);

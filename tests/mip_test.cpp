@@ -4,6 +4,7 @@
 #include "image_io.h"
 #include "image_load.h"
 #include "parser.h"
+#include "support/files.h"
 
 #include <gtest/gtest.h>
 
@@ -15,7 +16,6 @@
 
 namespace {
 
-const std::string kSourceDir = RAYTEX_SOURCE_DIR;
 
 ImageRGBA8 solidImage(int w, int h, uint8_t r, uint8_t g, uint8_t b, uint8_t a = 255) {
   ImageRGBA8 img;

@@ -31,7 +31,6 @@ std::vector<uint8_t> someBytes(size_t n) {
   return bytes;
 }
 
-size_t entries(const fs::path& dir) { return size_t(std::distance(fs::directory_iterator(dir), {})); }
 
 // The message of the std::runtime_error writeFileAtomic throws; empty if it does not throw.
 std::string writeError(const fs::path& path, const std::vector<uint8_t>& bytes) {
@@ -54,7 +53,7 @@ TEST(OutputFile, WritesThroughToANullDeviceAndKeepsIt) {
   MAKE_CHAR_DEVICE(null, 3);
   EXPECT_EQ(writeError(null, someBytes(1000)), "");
   EXPECT_TRUE(fs::is_character_file(null));
-  EXPECT_EQ(entries(dir), 1u);  // no temporary file, no PNG beside it
+  EXPECT_EQ(entryCount(dir), 1u);  // no temporary file, no PNG beside it
 }
 
 TEST(OutputFile, AFullDeviceIsAWriteErrorAndStaysADevice) {
@@ -63,7 +62,7 @@ TEST(OutputFile, AFullDeviceIsAWriteErrorAndStaysADevice) {
   MAKE_CHAR_DEVICE(full, 7);
   EXPECT_EQ(writeError(full, someBytes(1000)), "cannot write '" + full.string() + "': No space left on device");
   EXPECT_TRUE(fs::is_character_file(full));
-  EXPECT_EQ(entries(dir), 1u);
+  EXPECT_EQ(entryCount(dir), 1u);
 }
 
 TEST(OutputFile, AFifoWithNoReaderIsAnErrorNotAWait) {
@@ -99,7 +98,7 @@ TEST(OutputFile, ASymlinkIsFollowedAndItsTargetReplaced) {
   EXPECT_EQ(writeError(dir / "link.png", bytes), "");
   EXPECT_TRUE(fs::is_symlink(dir / "link.png"));
   EXPECT_EQ(readFile(dir / "real" / "a.png"), std::string(bytes.begin(), bytes.end()));
-  EXPECT_EQ(entries(dir / "real"), 1u);
+  EXPECT_EQ(entryCount(dir / "real"), 1u);
 }
 
 TEST(OutputFile, AnExistingFileKeepsItsModeAndANewOneFollowsTheUmask) {
@@ -126,7 +125,7 @@ TEST(OutputFile, NamesUpTo255BytesAreWritten) {
     EXPECT_EQ(writeError(dir / name, bytes), "") << length;
     EXPECT_EQ(readFile(dir / name), std::string(bytes.begin(), bytes.end()));
   }
-  EXPECT_EQ(entries(dir), 3u);
+  EXPECT_EQ(entryCount(dir), 3u);
 }
 
 TEST(OutputFile, TheTempNameFitsTheLimitAndCutsNoCharacter) {
@@ -160,7 +159,7 @@ int signalInTheMiddleOfAWrite(const fs::path& path, int sig, bool named, size_t*
   }
   int status = 0;
   waitpid(child, &status, WUNTRACED);
-  *entriesSeen = WIFSTOPPED(status) ? entries(path.parent_path()) : 0;
+  *entriesSeen = WIFSTOPPED(status) ? entryCount(path.parent_path()) : 0;
   if (!WIFSTOPPED(status)) return status;  // it ended without stopping: no test hook
   kill(child, sig);
   kill(child, SIGCONT);
@@ -181,7 +180,7 @@ TEST(OutputFile, ASignalDuringTheWriteLeavesNothingAndEndsWithTheSignal) {
       int status = signalInTheMiddleOfAWrite(dir / "out.png", sig, named, &seen);
       EXPECT_EQ(seen, named ? 2u : 1u) << strsignal(sig) << (named ? ", named" : "");
       EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == sig) << strsignal(sig) << ": status " << status;
-      EXPECT_EQ(entries(dir), 1u) << strsignal(sig) << (named ? ", named" : "");
+      EXPECT_EQ(entryCount(dir), 1u) << strsignal(sig) << (named ? ", named" : "");
       EXPECT_EQ(readFile(dir / "out.png"), "old") << strsignal(sig);
     }
 }
@@ -196,7 +195,7 @@ TEST(OutputFile, WithdrawRemovesWhatCommitPutInPlace) {
     EXPECT_TRUE(fs::exists(dir / "a.png"));
     file.withdraw();
     EXPECT_FALSE(fs::exists(dir / "a.png"));
-    EXPECT_EQ(entries(dir), 0u);
+    EXPECT_EQ(entryCount(dir), 0u);
     unsetenv("RAYTEX_TEST_NAMED_TEMP");
   }
 }
@@ -215,7 +214,7 @@ TEST(OutputFile, AFileSizeLimitIsAWriteErrorThatLeavesNoTempFile) {
   int status = 0;
   waitpid(child, &status, 0);
   EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << "status " << status;
-  EXPECT_EQ(entries(dir), 1u);
+  EXPECT_EQ(entryCount(dir), 1u);
   EXPECT_EQ(readFile(dir / "out.png"), "old");
 }
 

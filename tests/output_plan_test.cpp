@@ -19,7 +19,7 @@ namespace fs = std::filesystem;
 namespace {
 
 // The message checkPlan throws for `plan`, "" when it accepts it; `kind` receives the error's kind.
-std::string refusal(const OutputPlan& plan, ErrorKind* kind = nullptr) {
+std::string planRefusal(const OutputPlan& plan, ErrorKind* kind = nullptr) {
   try {
     checkPlan(plan);
   } catch (const Error& e) {
@@ -46,7 +46,7 @@ TEST(OutputPlan, TheSceneItsIncludesAndImagesAreNotOutputs) {
   auto clash = [&](const fs::path& p) {
     OutputPlan plan = writing(p);
     planSceneReads(plan, scene, "the scene");
-    return refusal(plan);
+    return planRefusal(plan);
   };
   const std::string s = (dir / "s.cfg").string(), inc = (dir / "inc.cfg").string(), tex = (dir / "tex.png").string();
   EXPECT_EQ(clash(s), "refusing to write '" + s + "': it is the scene file ('" + s + "')");
@@ -68,28 +68,28 @@ TEST(OutputPlan, TwoWritesOfOneFileAreRefusedWhetherOrNotItExists) {
   OutputPlan plan;
   plan.writes.push_back({(dir / "a.png").string(), "the image of 'x.cfg'", false, ""});
   plan.writes.push_back({(dir / "a.png").string(), "the albedo pass of 'y.cfg'", false, ""});
-  EXPECT_EQ(refusal(plan), "refusing to write '" + (dir / "a.png").string() +
+  EXPECT_EQ(planRefusal(plan), "refusing to write '" + (dir / "a.png").string() +
                                "' twice: it is the image of 'x.cfg' and the albedo pass of 'y.cfg'");
   plan.writes[1].path = (dir / "." / "a.png").string();  // another spelling of a new file
-  EXPECT_NE(refusal(plan).find("they are one file"), std::string::npos) << refusal(plan);
+  EXPECT_NE(planRefusal(plan).find("they are one file"), std::string::npos) << planRefusal(plan);
   writeFile(dir / "b.png", "old");
   fs::create_symlink("b.png", dir / "link.png");
   plan.writes[0].path = (dir / "b.png").string();
   plan.writes[1].path = (dir / "link.png").string();
-  EXPECT_EQ(refusal(plan), "refusing to write '" + (dir / "b.png").string() + "' and '" + (dir / "link.png").string() +
+  EXPECT_EQ(planRefusal(plan), "refusing to write '" + (dir / "b.png").string() + "' and '" + (dir / "link.png").string() +
                                "': they are one file, the image of 'x.cfg' and the albedo pass of 'y.cfg'");
   plan.writes[1].path = (dir / "c.png").string();
-  EXPECT_EQ(refusal(plan), "");
+  EXPECT_EQ(planRefusal(plan), "");
 }
 
 TEST(OutputPlan, AWriteThatIsAReadIsRefusedEvenBeforeEitherExists) {
   fs::path dir = freshTempDir("output_plan_read");
   OutputPlan plan = writing(dir / "ref.png");
   plan.reads.push_back({(dir / "ref.png").string(), "the reference image --compare reads", true});
-  EXPECT_EQ(refusal(plan), "refusing to write '" + (dir / "ref.png").string() +
+  EXPECT_EQ(planRefusal(plan), "refusing to write '" + (dir / "ref.png").string() +
                                "': it is the reference image --compare reads ('" + (dir / "ref.png").string() + "')");
   writeFile(dir / "ref.png", "golden");
-  EXPECT_NE(refusal(plan), "");
+  EXPECT_NE(planRefusal(plan), "");
   EXPECT_EQ(readFile(dir / "ref.png"), "golden");
 }
 
@@ -99,29 +99,29 @@ TEST(OutputPlan, AReadThatMustBeARegularFileIsCheckedFirst) {
   OutputPlan plan;
   plan.reads.push_back({(dir / "f.png").string(), "an image compared", true});
   ErrorKind kind = ErrorKind::Internal;
-  EXPECT_EQ(refusal(plan, &kind), "cannot open image '" + (dir / "f.png").string() + "': not a regular file");
+  EXPECT_EQ(planRefusal(plan, &kind), "cannot open image '" + (dir / "f.png").string() + "': not a regular file");
   EXPECT_EQ(kind, ErrorKind::ImageInput);
   plan.reads[0].path = (dir / "none.png").string();
-  EXPECT_EQ(refusal(plan), "cannot open image '" + (dir / "none.png").string() + "': No such file or directory");
+  EXPECT_EQ(planRefusal(plan), "cannot open image '" + (dir / "none.png").string() + "': No such file or directory");
 }
 
 TEST(OutputPlan, PassFilesNeverGoBesideADeviceOrFifoNorOntoOne) {
   fs::path dir = freshTempDir("output_plan_device");
   ASSERT_EQ(mkfifo((dir / "fifo").c_str(), 0600), 0);
   OutputPlan plan = writing(dir / "fifo");
-  EXPECT_EQ(refusal(plan), "");  // named: written through
+  EXPECT_EQ(planRefusal(plan), "");  // named: written through
   plan.writes.push_back({(dir / "fifo.normal.pfm").string(), "the normal pass", false, (dir / "fifo").string()});
-  EXPECT_NE(refusal(plan).find("beside '" + (dir / "fifo").string() + "', which is not a regular file"),
+  EXPECT_NE(planRefusal(plan).find("beside '" + (dir / "fifo").string() + "', which is not a regular file"),
             std::string::npos)
-      << refusal(plan);
+      << planRefusal(plan);
   ASSERT_EQ(mkfifo((dir / "x.png").c_str(), 0600), 0);
   ErrorKind kind = ErrorKind::Internal;
-  EXPECT_NE(refusal(writing(dir / "x.png", false), &kind).find("it exists and is not a regular file"), std::string::npos);
+  EXPECT_NE(planRefusal(writing(dir / "x.png", false), &kind).find("it exists and is not a regular file"), std::string::npos);
   EXPECT_EQ(kind, ErrorKind::Usage);
   if (mknod((dir / "null").c_str(), S_IFCHR | 0666, makedev(1, 3)) == 0) {  // root only
     OutputPlan twice = writing(dir / "null");
     twice.writes.push_back({(dir / "null").string(), "the heat map", true, ""});
-    EXPECT_EQ(refusal(twice), "");  // one null device takes both
+    EXPECT_EQ(planRefusal(twice), "");  // one null device takes both
   }
 }
 
@@ -129,13 +129,13 @@ TEST(OutputPlan, ANameOverTheDirectorysLimitAndAMissingDirectoryAreRefused) {
   fs::path dir = freshTempDir("output_plan_names");
   ErrorKind kind = ErrorKind::Internal;
   const std::string longName(256, 'n');
-  EXPECT_NE(refusal(writing(dir / longName), &kind).find("its name is 256 bytes, more than the 255"), std::string::npos);
+  EXPECT_NE(planRefusal(writing(dir / longName), &kind).find("its name is 256 bytes, more than the 255"), std::string::npos);
   EXPECT_EQ(kind, ErrorKind::Usage);
-  EXPECT_EQ(refusal(writing(dir / std::string(255, 'n'))), "");
-  EXPECT_EQ(refusal(writing(dir / "none" / "a.png"), &kind),
+  EXPECT_EQ(planRefusal(writing(dir / std::string(255, 'n'))), "");
+  EXPECT_EQ(planRefusal(writing(dir / "none" / "a.png"), &kind),
             "cannot write '" + (dir / "none" / "a.png").string() + "': No such file or directory");
   EXPECT_EQ(kind, ErrorKind::Io);
   fs::create_directory(dir / "d.png");
-  EXPECT_EQ(refusal(writing(dir / "d.png"), &kind), "cannot write '" + (dir / "d.png").string() + "': Is a directory");
+  EXPECT_EQ(planRefusal(writing(dir / "d.png"), &kind), "cannot write '" + (dir / "d.png").string() + "': Is a directory");
   EXPECT_EQ(kind, ErrorKind::Io);
 }

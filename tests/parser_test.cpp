@@ -24,8 +24,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const std::string kSource = RAYTEX_SOURCE_DIR;
-const std::string kTexturesCfg = kSource + "/scenes/textures.cfg";
+const std::string kTexturesCfg = kSourceDir + "/scenes/textures.cfg";
 
 // The message of the SceneError that parsing `text` as `file` throws, or "<no error>".
 std::string errorOf(const std::string& text, const std::string& file = "t.cfg") {
@@ -109,7 +108,7 @@ const char* kAlternatives[] = {"aNoise", "aMarble", "aWood", "anImage", "aTurbul
 TEST(ParserNotes, ExcerptVerbatimWithIncludedMaterials) {
   // Parsed as if it were a file in scenes/, so the include resolves next to it.
   std::string text = std::string("#include \"texture_include.cfg\"\n") + kNotesExcerpt;
-  Scene s = parseSceneText(text, kSource + "/scenes/notes_excerpt.cfg");
+  Scene s = parseSceneText(text, kSourceDir + "/scenes/notes_excerpt.cfg");
   ASSERT_EQ(s.spheres.size(), 1u);
   ASSERT_EQ(s.planes.size(), 1u);
   expectVec(s.spheres[0].center, 0, 0, 0);
@@ -161,13 +160,13 @@ TEST(ParserScenes, TexturesCfg) {
     ASSERT_GE(i, 0) << name;
     const Material& m = s.materials[size_t(i)];
     EXPECT_EQ(m.texture.kind, kind) << name;
-    EXPECT_EQ(m.loc.file, kSource + "/scenes/texture_include.cfg") << name;
+    EXPECT_EQ(m.loc.file, kSourceDir + "/scenes/texture_include.cfg") << name;
     EXPECT_GT(m.shininess, 0.0f) << name;
   }
   // Image paths are joined to the directory of the file naming them, then lexically normalised.
   const Material& img = s.materials[size_t(materialIndex(s, "anImage"))];
-  EXPECT_EQ(img.texture.imagePath, (fs::path(kSource) / "textures/earth.jpg").lexically_normal().string());
-  EXPECT_EQ(img.texture.loc.file, kSource + "/scenes/texture_include.cfg");
+  EXPECT_EQ(img.texture.imagePath, (fs::path(kSourceDir) / "textures/earth.jpg").lexically_normal().string());
+  EXPECT_EQ(img.texture.loc.file, kSourceDir + "/scenes/texture_include.cfg");
   EXPECT_GT(img.texture.loc.line, 0);
 
   EXPECT_EQ(s.lights.size(), 1u);
@@ -719,7 +718,7 @@ TEST_F(ParserFiles, ErrorsInsideAnIncludedFileReferToThatFile) {
 }
 
 TEST_F(ParserFiles, AbsoluteIncludePath) {
-  std::string main = write("main.cfg", "#include \"" + kSource + "/scenes/texture_include.cfg\"\nsphere { aWood; }\n");
+  std::string main = write("main.cfg", "#include \"" + kSourceDir + "/scenes/texture_include.cfg\"\nsphere { aWood; }\n");
   Scene s = parseSceneFile(main);
   EXPECT_EQ(s.materials.size(), 8u);
   EXPECT_EQ(s.materials[size_t(s.spheres[0].material)].name, "aWood");

@@ -31,7 +31,6 @@
 
 namespace {
 
-const std::string kSourceDir = RAYTEX_SOURCE_DIR;
 const char* const kMaterials[] = {"aSolidChecker", "aChecker", "aNoise",      "aMarble",
                                   "aWood",         "anImage",  "aTurbulence", "aDturbulence"};
 

@@ -4,6 +4,7 @@
 // unrolled and the run-time loops. Kernels built around a scene's values (bakeScene, what
 // raytex render uses) must render exactly what the kernel reading them from buffers renders.
 #include "support/course_scene.h"
+#include "support/files.h"
 #include "support/gpu_fixture.h"
 #include "gpu_scene.h"
 #include "parser.h"
@@ -15,7 +16,6 @@
 
 namespace {
 
-const std::string kSourceDir = RAYTEX_SOURCE_DIR;
 constexpr uint32_t kWidth = 80, kHeight = 60;
 
 std::string header() {

@@ -6,6 +6,7 @@
 #include "overlay.h"
 #include "parser.h"
 #include "selection.h"
+#include "support/files.h"
 
 #include <gtest/gtest.h>
 
@@ -15,11 +16,10 @@
 
 namespace {
 
-const std::string kSource = RAYTEX_SOURCE_DIR;
 const char* const kCourse[] = {"aSolidChecker", "aNoise",       "aMarble",  "aWood",
                                "anImage",       "aTurbulence", "aDturbulence", "aChecker"};
 
-Scene courseScene() { return parseSceneFile(kSource + "/scenes/textures.cfg"); }
+Scene courseScene() { return parseSceneFile(kSourceDir + "/scenes/textures.cfg"); }
 
 int material(const Scene& scene, const std::string& name) {
   for (size_t i = 0; i < scene.materials.size(); ++i)
@@ -59,7 +59,7 @@ TEST(Selection, MaterialsGoOnTheSelectionOrEverySphere) {
 
 TEST(Selection, MCyclesTheScenesOwnMaterialsThenTheCourses) {
   Scene scene = parseSceneText("#include \"texture_include.cfg\"\nmaterial mine { }\nmaterial other { }\nsphere { }\n",
-                               kSource + "/scenes/m.cfg");
+                               kSourceDir + "/scenes/m.cfg");
   const int mine = material(scene, "mine"), other = material(scene, "other");
   EXPECT_EQ(nextMaterial(scene, -1, kCourse, 8), mine);
   EXPECT_EQ(nextMaterial(scene, mine, kCourse, 8), other);

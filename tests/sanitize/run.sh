@@ -7,7 +7,8 @@
 # shader coverage, which the README's test command runs in full. `cli` starts raytex a few
 # hundred times to check exit codes and messages; the code it reaches (parsing, errors, output
 # files, renders) runs here through the unit, render, malformed and output tests. The benchmarks
-# are not built. Timings: docs/architecture.md, "Tests".
+# are not built. The unit tests run as three processes, not one each (tests/CMakeLists.txt).
+# Timings: docs/architecture.md, "Tests".
 # Usage: tests/sanitize/run.sh [BUILD_DIR]   (default build-sanitize)
 set -euo pipefail
 cd "$(dirname "$0")/../.."
@@ -27,7 +28,12 @@ export LSAN_OPTIONS=suppressions=$supp/lsan.supp:print_suppressions=0
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 export RAYTEX_SANITIZED=1  # tests/cli_test.sh, output_test.sh: skip the address-space limit tests (ASan's shadow needs terabytes)
 SWEEPS='BakedKernelsMatchTheUniformBuffers|(CourseScenes|Fields)RenderWhatTheOneKernelRenders|NoiseFilterTest|Shadow(Lists|Grids)RenderWhatTheTreeWalkRenders|RendersWhatTheLoopOverEverySphereRenders'
-# Image-quality comparisons of kernel variants and filters (the same host path as the rest):
+# Image comparisons of kernel variants and filters, bit for bit or against a reference (the same
+# host path as the rest: passes, the coverage filter's dispatches and supersampling run here in
+# AovTest, CoverageTest.RendersAtTheLoopLimit and ProgressiveEqualsLoop):
 SWEEPS+='|ImageFilterTest|OctaveClampingTest|BoxFilterBeatsPointSampling|HorizonBandBoxBeatsPointSampling|FullBlocksRenderTheirLastItems|CourseMaterialsMatchTheUnspecialisedKernel|AllScenesFiniteWhenSupersampledAndFiltered|FilteredCheckerBeatsSupersamplingAtTheHorizon|IdentityPlacementIsExact|TileKernelsWriteThePassesOfTheOneKernel'
 SWEEPS+='|EachEdgeAloneMatchesTheReferencePixelByPixel|CourseSceneIsCloserToTheReferenceThanTheBoxFilter'
+SWEEPS+='|ShadedImageIsBitIdenticalWithPasses|SupersampledPassesComeFromThePixelCentre|PixelsNoEdgeCrossesAreBitIdenticalToTheBoxFilter'
+SWEEPS+='|FilteredNoiseKinds(AreFiniteOnSpheresAndGrazingPlanes|TendToPointSamplingUnderMagnification)'
+SWEEPS+='|RotatedScaledCheckerBoxFilterMatchesSupersampledReference|SupersamplingConvergesToTheReference'
 ctest --test-dir "$build" -LE fuzz -E "^cli\$|$SWEEPS" --output-on-failure -j3

@@ -53,3 +53,5 @@ fs::path testOutputDir() {
   fs::create_directories(dir);
   return dir;
 }
+
+size_t entryCount(const fs::path& dir) { return size_t(std::distance(fs::directory_iterator(dir), {})); }

@@ -1,7 +1,9 @@
-// Numbers for test messages and recorded test properties.
+// Numbers for test messages and recorded test properties, and the bits of a float.
 #pragma once
 
+#include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <string>
 
 // `v` with four decimals ("0.1234"): errors and RMSEs of images.
@@ -16,4 +18,11 @@ inline std::string fmtG(double v) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.3g", v);
   return buf;
+}
+
+// The bits of `v`, for comparing floats exactly (NaNs and signed zeros included).
+inline uint32_t bitsOf(float v) {
+  uint32_t bits;
+  std::memcpy(&bits, &v, 4);
+  return bits;
 }
