@@ -7,7 +7,7 @@
 # shader coverage, which the README's test command runs in full. `cli` starts raytex a few
 # hundred times to check exit codes and messages; the code it reaches (parsing, errors, output
 # files, renders) runs here through the unit, render, malformed and output tests. The benchmarks
-# are not built. The unit tests run as three processes, not one each (tests/CMakeLists.txt).
+# are not built. The unit tests run as four processes, not one each (tests/CMakeLists.txt).
 # Timings: docs/architecture.md, "Tests".
 # Usage: tests/sanitize/run.sh [BUILD_DIR]   (default build-sanitize)
 set -euo pipefail
