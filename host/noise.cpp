@@ -61,9 +61,6 @@ int clampOctaves(int octaves) { return octaves < 0 ? 0 : (octaves > kNoiseMaxOct
 
 }  // namespace
 
-
-glm::dvec3 noiseGradientVector(uint32_t h) { return kGradients[h & 15u]; }
-
 double perlinNoise(glm::dvec3 p) {
   NoiseCell c = noiseCell(p);
   double n[8];

@@ -21,9 +21,6 @@
 // octave 16 already has 65536x the base frequency): the kernel's NOISE_MAX_OCTAVES.
 constexpr int kNoiseMaxOctaves = int(NOISE_MAX_OCTAVES);
 
-// The gradient the hash h selects (only the low 4 bits are used).
-glm::dvec3 noiseGradientVector(uint32_t h);
-
 // Improved Perlin noise. 0 at every integer lattice point; |value| < ~1.04.
 double perlinNoise(glm::dvec3 p);
 
