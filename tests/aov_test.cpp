@@ -8,6 +8,7 @@
 //   (in one dispatch or progressive) the passes of the pixel centre, as with one sample; in bands
 //   of rows the same passes as in one band.
 #include "support/course_scene.h"
+#include "support/files.h"
 #include "support/format.h"
 #include "support/gpu_fixture.h"
 #include "support/reference_pixels.h"
@@ -32,7 +33,7 @@
 namespace {
 
 // Scene text is read as if from scenes/ (image paths relative to it).
-Scene sceneText(const std::string& text) { return parseSceneText(text, std::string(RAYTEX_SOURCE_DIR) + "/scenes/aov_test.cfg"); }
+Scene sceneText(const std::string& text) { return parseSceneText(text, kSourceDir + "/scenes/aov_test.cfg"); }
 const std::string kUvGrid = "material m { texture = image { file = \"../textures/uv_grid.png\"; } }\n";
 
 const uint32_t kAllPasses = (1u << AOV_COUNT) - 1u;

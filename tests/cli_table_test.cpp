@@ -1,6 +1,7 @@
 // The command line's table (host/cli.cpp): parsing of both option forms, refusals, and the
 // reference in docs/cli.md, which must equal the table.
 #include "cli.h"
+#include "support/files.h"
 
 #include <gtest/gtest.h>
 
@@ -11,7 +12,7 @@
 
 namespace {
 
-const std::string kCliDoc = std::string(RAYTEX_SOURCE_DIR) + "/docs/cli.md";
+const std::string kCliDoc = kSourceDir + "/docs/cli.md";
 const std::string kBegin = "<!-- option table: begin -->\n";
 const std::string kEnd = "<!-- option table: end -->\n";
 

@@ -3,6 +3,7 @@
 // implementation's error maps of three image pairs (tests/golden/flip/README.md).
 #include "flip.h"
 #include "image_load.h"
+#include "support/files.h"
 
 #include <gtest/gtest.h>
 
@@ -33,7 +34,7 @@ FloatImage blankImage(int w, int h, int channels, float value) {
 
 // An 8-bit PNG's values / 255: the sRGB input the reference implementation reads from it.
 FloatImage srgbOf(const std::string& name) {
-  const ImageRGBA8 png = loadImage(std::string(RAYTEX_SOURCE_DIR) + "/tests/golden/flip/" + name);
+  const ImageRGBA8 png = loadImage(kSourceDir + "/tests/golden/flip/" + name);
   FloatImage image = blankImage(png.width, png.height, 3, 0.0f);
   for (size_t i = 0; i < size_t(png.width) * png.height; ++i)
     for (size_t c = 0; c < 3; ++c) image.pixels[i * 3 + c] = png.pixels[i * 4 + c] / 255.0f;

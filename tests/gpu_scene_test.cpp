@@ -318,7 +318,7 @@ TEST(GpuScene, AllMaterialsLeavesOutImagesPastTheLimit) {
     text += std::string("material m") + name + " { texture = image { file = \"count/" + name + ".png\"; } }\n";
   }
   text += "sphere { radius = 1; m16; }\n";
-  Scene scene = parseSceneText(text, std::string(RAYTEX_SOURCE_DIR) + "/tests/malformed/images/all.cfg");
+  Scene scene = parseSceneText(text, kSourceDir + "/tests/malformed/images/all.cfg");
   PackOptions pack;
   pack.mipmaps = false;
   pack.allMaterials = true;
@@ -337,7 +337,7 @@ TEST(GpuScene, AllMaterialsLeavesOutImagesPastTheLimit) {
 }
 
 TEST(GpuScene, AllMaterialsPacksUnusedOnesButSpecialisesToTheUsed) {
-  Scene scene = parseSceneFile(std::string(RAYTEX_SOURCE_DIR) + "/scenes/textures.cfg");
+  Scene scene = parseSceneFile(kSourceDir + "/scenes/textures.cfg");
   PackOptions pack;
   pack.mipmaps = false;
   GpuScene used = buildGpuScene(scene, 8, 8, pack);

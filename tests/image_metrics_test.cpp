@@ -127,7 +127,7 @@ TEST(ImageMetrics, SsimMatchesScikitImage) {
     double ssim;
   } pairs[] = {{"course", 0.7872813779}, {"colour", 0.8075292158}, {"edges", 0.5193424345}};
   for (const auto& p : pairs) {
-    const std::string dir = std::string(RAYTEX_SOURCE_DIR) + "/tests/golden/flip/";
+    const std::string dir = kSourceDir + "/tests/golden/flip/";
     const LinearImage a = readLinearImage(dir + p.name + "_a.png", 1u << 30);
     const LinearImage b = readLinearImage(dir + p.name + "_b.png", 1u << 30);
     EXPECT_NEAR(structuralSimilarity(linearToSrgbImage(a.image), linearToSrgbImage(b.image)), p.ssim, 1e-6)

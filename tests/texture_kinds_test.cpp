@@ -84,7 +84,7 @@ TEST(TextureKinds, PackingFollowsTheRows) {
 
 // docs/scene-format.md holds the table the rows make, verbatim.
 TEST(TextureKinds, DocsTableMatchesTheRows) {
-  std::string docs = readFile(std::string(RAYTEX_SOURCE_DIR) + "/docs/scene-format.md");
+  std::string docs = readFile(kSourceDir + "/docs/scene-format.md");
   ASSERT_FALSE(docs.empty());
   std::string table = textureKindsMarkdown();
   EXPECT_NE(docs.find(table), std::string::npos)

@@ -1,5 +1,6 @@
 // Tile kernels (host/tile_kernels.h) on the device: a frame split among kernels specialised to
 // the kinds of their tiles renders, bit for bit, what the one kernel of the scene renders.
+#include "support/files.h"
 #include "support/gpu_fixture.h"
 #include "gpu_scene.h"
 #include "parser.h"
@@ -20,7 +21,7 @@ Scene course(const std::string& material, double radius, const std::string& eye)
                            "light { position = (-6, 10, 6); color = (1, 1, 1); }\n"
                            "sphere { center = (0, 0, 0); radius = " + std::to_string(radius) + "; " + material + "; }\n"
                            "plane { normal = (0, 1, 0); distance = -2; tex_scale = 5; aChecker; }\n";
-  return parseSceneText(text, std::string(RAYTEX_SOURCE_DIR) + "/scenes/tile-kernels-test.cfg");
+  return parseSceneText(text, kSourceDir + "/scenes/tile-kernels-test.cfg");
 }
 
 struct Render {

@@ -1,11 +1,12 @@
 #include "support/course_scene.h"
+#include "support/files.h"
 
 #include "parser.h"
 
 #include <stdexcept>
 
 const std::string& courseScenePath() {
-  static const std::string path = std::string(RAYTEX_SOURCE_DIR) + "/scenes/textures.cfg";
+  static const std::string path = kSourceDir + "/scenes/textures.cfg";
   return path;
 }
 

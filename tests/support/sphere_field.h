@@ -4,6 +4,7 @@
 
 #include "parser.h"
 #include "scene.h"
+#include "support/files.h"
 
 #include <cmath>
 #include <random>
@@ -27,7 +28,7 @@ inline Scene field(int n, const std::string& eye, const std::string& lookat = "(
     text += "sphere { center = (" + std::to_string(x) + ", " + std::to_string(-2.0 + r) + ", " + std::to_string(z) +
             "); radius = " + std::to_string(r) + "; " + materials[i % 8] + "; }\n";
   }
-  return parseSceneText(text, std::string(RAYTEX_SOURCE_DIR) + "/scenes/sphere-field-test.cfg");
+  return parseSceneText(text, kSourceDir + "/scenes/sphere-field-test.cfg");
 }
 
 // A field with four lights (the course's; one low among the spheres; one above the field's

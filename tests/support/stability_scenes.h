@@ -7,6 +7,7 @@
 #include "texture.h"
 #include "texture_kinds.h"
 
+#include "support/files.h"
 #include "support/format.h"
 
 #include <glm/geometric.hpp>
@@ -21,7 +22,7 @@ constexpr double kPi = 3.14159265358979323846;
 // and no objects.
 inline Scene emptyScene() {
   Scene scene;
-  scene.path = std::string(RAYTEX_SOURCE_DIR) + "/tests/support/stability_scenes.h";
+  scene.path = kSourceDir + "/tests/support/stability_scenes.h";
   scene.background = glm::vec3(0.25f, 0.5f, 0.75f);
   scene.ambientLight = glm::vec3(1.0f);
   return scene;
@@ -32,7 +33,7 @@ inline int addMaterial(Scene& scene, TextureKind kind) {
   Material m = defaultMaterial();
   m.name = std::string("m") + std::to_string(scene.materials.size());
   if (kind != TextureKind::None) m.texture = defaultTexture(kind);
-  if (kind == TextureKind::Image) m.texture.imagePath = std::string(RAYTEX_SOURCE_DIR) + "/textures/uv_grid.png";
+  if (kind == TextureKind::Image) m.texture.imagePath = kSourceDir + "/textures/uv_grid.png";
   scene.materials.push_back(m);
   return int(scene.materials.size()) - 1;
 }
