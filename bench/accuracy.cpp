@@ -4,6 +4,7 @@
 // compared with the float64 reference renderer (64x64 stratified samples per pixel).
 // Writes OUTDIR/accuracy.csv and the images (sRGB PNG) that bench/accuracy_chart.py reads.
 // Usage: raytex_bench_accuracy OUTDIR WIDTH HEIGHT RUNS NAME=SCENE [NAME=SCENE ...]
+#include "support/reference_rmse.h"
 #include "common.h"
 #include "bench.h"
 #include "gpu_scene.h"

@@ -5,7 +5,7 @@
 // The kernel is built around the scene's values as in raytex render (bakeScene), unless the
 // sixth argument is "unbaked"; its textures are point-sampled unless the seventh is "box"; the
 // eighth, "progressive", renders as the viewer does: one sample per frame, accumulated; the ninth,
-// "one", renders with the scene's one kernel, not tile kernels (host/tile_kernels.h).
+// "one", renders with the scene's one kernel, not tile kernels (host/gpu/tile_kernels.h).
 // Usage: raytex_bench_frames SCENE WIDTH HEIGHT FRAMES [SAMPLES_PER_SIDE [baked|unbaked [point|box
 //        [single|progressive [tiles|one]]]]]
 #include "gpu_scene.h"

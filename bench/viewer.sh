@@ -58,7 +58,7 @@ switches() {  # switches LABEL SETTLE_SECONDS VIEW_ARGS...: press the material k
     sleep 0.7
   done
   xdotool key --window "$wid" Escape
-  xdotool keyup Escape  # released through the server: the window may be gone (tests/viewer_test.sh)
+  xdotool keyup Escape  # released through the server: the window may be gone (tests/viewer/viewer_test.sh)
   wait "$viewer"
   echo "$label $(grep -h 'switches\|error' "$tmp/switch.log")"
 }

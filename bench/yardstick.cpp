@@ -16,6 +16,7 @@
 // --dump DIR writes each kernel's image as PNG, the differences (x8) of each compared pair, and
 // prints the pairs' max and mean differences (0..255 per sRGB channel).
 // Run with VK_ICD_FILENAMES=/usr/share/vulkan/icd.d/lvp_icd.x86_64.json LP_NUM_THREADS=2.
+#include "support/image_diff.h"
 #include "common.h"
 #include "gpu_scene.h"
 #include "image_io.h"
@@ -94,7 +95,7 @@ void createYardstick(Yardstick& y, const Device& device, uint32_t width, uint32_
   y.output = createImage(device, width, height, 1, VK_FORMAT_R32G32B32A32_SFLOAT,
                          VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, false);
   y.readback = createBuffer(device, VkDeviceSize(width) * height * 16, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
-  // raytex's permutation (host/noise.cpp), so the two marbles can be compared by eye.
+  // raytex's permutation (host/reference/noise.cpp), so the two marbles can be compared by eye.
   const std::array<uint32_t, 512>& perm = noisePermutation();
   y.permutation = createBuffer(device, sizeof(perm), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
   writeBuffer(y.permutation, perm.data(), sizeof(perm));

@@ -49,12 +49,12 @@ using uvec4 = glm::uvec4;
 #define BINDING_TREE_STORAGE 11    // storage BvhNode[] (SPHERE_TREE_STORAGE)
 #define BINDING_SPHERE_STORAGE 12  // storage Sphere[] (SPHERE_TREE_STORAGE)
 #define BINDING_STATUS 13          // storage uint[STATUS_WORDS]: what the kernel reports to the host
-// Per-tile sphere lists (SPEC_TILE_LISTS, host/tile_lists.h): per tile its first entry and count,
+// Per-tile sphere lists (SPEC_TILE_LISTS, host/accel/tile_lists.h): per tile its first entry and count,
 // and the entries (indices of spheres); then, with SPEC_SHADOW_LISTS, per cell of tiles and light.
 // 16-byte placeholders without them.
 #define BINDING_TILE_RANGES 14   // storage uint[2 * tiles]
 #define BINDING_TILE_SPHERES 15  // storage uint[]
-// Tile kernels (SPEC_TILE_ORDER, host/tile_kernels.h): a frame dispatched as up to
+// Tile kernels (SPEC_TILE_ORDER, host/gpu/tile_kernels.h): a frame dispatched as up to
 // MAX_TILE_KERNELS kernels, each over its own tiles and specialised to the texture kinds those
 // tiles can show. Workgroup x of a dispatch renders tile word x of the block bound at the
 // dispatch's dynamic offset: its column | row << 16, or TILE_ORDER_NONE (nothing). A uniform
@@ -94,8 +94,9 @@ using uvec4 = glm::uvec4;
 // through the sphere tree (8 MiB at the limit).
 #define MAX_SPHERES 131072
 
-// The sphere tree: a bounding volume hierarchy over the spheres (host/sphere_tree.h), walked in
-// the kernel instead of the loop over every sphere (shaders/sphere_tree.glsl).
+// The sphere tree: a bounding volume hierarchy over the spheres (host/accel/bvh.h, laid out by
+// host/accel/gpu_tree.h), walked in the kernel instead of the loop over every sphere
+// (shaders/sphere_tree.glsl).
 #define SPHERE_TREE_NONE 0     // the loop over every sphere
 #define SPHERE_TREE_UNIFORM 1  // nodes in BINDING_TREE, spheres in BINDING_SPHERES
 #define SPHERE_TREE_STORAGE 2  // nodes in BINDING_TREE_STORAGE, spheres in BINDING_SPHERE_STORAGE
@@ -113,7 +114,7 @@ using uvec4 = glm::uvec4;
 #define TILE_FILL_LIMIT 64u
 // Shadow rays of such a scene test the spheres listed for their cell of SHADOW_CELL x
 // SHADOW_CELL tiles (fewer lists to build on each camera move than one a tile) and light
-// (SPEC_SHADOW_LISTS, host/shadow_lists.h), in the same buffers after the primary lists, where
+// (SPEC_SHADOW_LISTS, host/accel/shadow_lists.h), in the same buffers after the primary lists, where
 // the scene has at most SHADOW_LIST_MAX_LIGHTS lights and SHADOW_LIST_MAX_PLANES planes (the
 // host projects every sphere's shadow onto every plane for every light).
 #define SHADOW_LIST_MAX_LIGHTS 4u
@@ -121,7 +122,7 @@ using uvec4 = glm::uvec4;
 #define SHADOW_CELL 2u
 #define SHADOW_LIST_MAX 32u  // spheres in a cell's list for a light; over that its rays walk the tree
 // Where a cell's list is long, a shadow ray of a scene over MAX_UNIFORM_SPHERES from a point
-// between a plane and the light looks up the light's shadow grid (host/shadow_grid.h,
+// between a plane and the light looks up the light's shadow grid (host/accel/shadow_grid.h,
 // Frame.shadowGrids): a grid over the plane listing, per grid cell, the spheres whose shadow
 // covers it, two words a cell (first entry, count), row by row, in BINDING_TILE_RANGES.
 // Scenes with more spheres than the loop is specialised to (MAX_SPECIALISED_COUNT) walk the tree
@@ -133,7 +134,7 @@ using uvec4 = glm::uvec4;
 // count their loops' passes per group and, before the driver's limit, stop and set
 // STATUS_LOOP_BUDGET in BINDING_STATUS; the host reports it.
 #define STATUS_LOOP_BUDGET 1u  // bit of word 0: some group's loops passed the budget
-// Octave counts above this are clamped (on the host: kNoiseMaxOctaves, host/noise.h).
+// Octave counts above this are clamped (on the host: kNoiseMaxOctaves, host/reference/noise.h).
 #define NOISE_MAX_OCTAVES 16u
 // Loop passes per sample bounded by constants, reserved for in the budget: the noise kinds' octave
 // loops (each runs in every SIMD group with its kind, at most NOISE_MAX_OCTAVES passes, and one
@@ -142,7 +143,7 @@ using uvec4 = glm::uvec4;
 #define LOOP_PASSES_PER_SAMPLE (4u * (NOISE_MAX_OCTAVES + 1u) + 9u + 33u)
 #define STATUS_WORDS 4
 
-// Texture kinds (Material.textureKind; one row each in host/texture_kinds.cpp, GLSL in
+// Texture kinds (Material.textureKind; one row each in host/scene/texture_kinds.cpp, GLSL in
 // shaders/kinds/). Bit (1 << kind) of SPEC_SPHERE_TEXTURE_KINDS and
 // SPEC_PLANE_TEXTURE_KINDS says the kind is on a sphere or a plane; absent kinds compile to
 // nothing.
@@ -158,7 +159,7 @@ using uvec4 = glm::uvec4;
 #define TEX_BRICKS 9
 #define TEX_KIND_COUNT 10
 // The kinds that read the 2D (u, v) of the shape's mapping; the others read the solid coordinate
-// (each kind's row in host/texture_kinds.cpp says which; a test checks that the two agree).
+// (each kind's row in host/scene/texture_kinds.cpp says which; a test checks that the two agree).
 #define TEX_2D_KINDS ((1u << TEX_IMAGE) | (1u << TEX_CHECKER) | (1u << TEX_BRICKS))
 
 // Specialisation constant ids.
@@ -252,7 +253,7 @@ using uvec4 = glm::uvec4;
 #define OUTPUT_COORDS 1  // rgb = texture coordinate (u, v, w; w = 0 for 2D), a = HIT_*
 #define OUTPUT_ALBEDO 2  // rgb = texture colour (the diffuse coefficient), a = HIT_*
 
-// Passes (AOVs, host/passes.h): bit AOV_<NAME> of a kernel's pass mask. Each requested pass is
+// Passes (AOVs, host/scene/passes.h): bit AOV_<NAME> of a kernel's pass mask. Each requested pass is
 // a plane of vec4 per pixel in BINDING_AOV, in bit order: its values in xyz (unused ones 0) and
 // the pixel's coverage in w (1 on a surface, 0 on the background, where xyz are 0 too).
 // They come from the primary ray through the pixel centre, with the footprint of one pixel:

@@ -1,7 +1,7 @@
 // Texture coordinates of the two shapes (course notes eqs 1-9) with the object's texture
 // placement (docs/textures.md, "Texture placement") and, in the box-filtered module, their
 // derivatives along the surface steps of a sample's footprint. The CPU double-precision
-// oracle is host/mapping.cpp; keep the two in step.
+// oracle is host/reference/mapping.cpp; keep the two in step.
 #ifndef RAYTEX_MAPPING_GLSL
 #define RAYTEX_MAPPING_GLSL
 
@@ -89,7 +89,7 @@ TexCoord planeTexCoord(Plane pl, vec3 p, vec3 dpdx, vec3 dpdy, out Footprint fp)
 // is well conditioned everywhere and cannot go NaN when rounding pushes |n_y| past 1
 // (no clamp needed). Lavapipe's asin is off by up to 2e-4 rad for
 // |n_y| > 0.5 (0.13 texel of a 1024-row image, visible at sharp image edges); the
-// atan form agrees with the double asin of host/mapping.cpp to ~1e-7.
+// atan form agrees with the double asin of host/reference/mapping.cpp to ~1e-7.
 // latLong false (a constant: no sphere's kind reads uv) leaves uv at 0 and skips the atans.
 // While sp.clampV (s = 1, no v offset) v stays in [0, 1] for the poles' clamp.
 TexCoord sphereTexCoord(Sphere sp, vec3 n, bool latLong) {

@@ -1,11 +1,11 @@
 // Ken Perlin's improved noise (SIGGRAPH 2002), its analytic gradient, turbulence
 // and derivative turbulence, and (RAYTEX_FILTER_BOX) their frequency-clamped forms. The CPU
-// double-precision oracle is host/noise.cpp; keep the two in step.
+// double-precision oracle is host/reference/noise.cpp; keep the two in step.
 //
 // Needs (declared by the including kernel):
 //   layout(std140, binding = BINDING_NOISE) uniform NoiseBlock { NoiseTable noiseTable; };
 // holding the 256-entry permutation repeated to 512, in neighbour pairs (common.h, NoiseTable;
-// host/noise.cpp, fillNoiseTable).
+// host/reference/noise.cpp, fillNoiseTable).
 //
 // - Lattice cell from floor(), reduced mod 256 in float before any int conversion
 //   (int() truncates toward 0 and breaks negative cells). Period 256.
@@ -162,7 +162,7 @@ float dturbulence(vec3 p, uint octaves) {
 // cells, where an octave is dropped: not evaluated, it adds its mean.
 
 // Moments of perlinNoise over uniform random points of one period, [0, 256)^3, measured with
-// host/noise.cpp (two seeds of 10^7 points: E|n| = 0.22279 and 0.22276, Var|n| = 0.02504 and
+// host/reference/noise.cpp (two seeds of 10^7 points: E|n| = 0.22279 and 0.22276, Var|n| = 0.02504 and
 // 0.02503; E n = 0). pbrt's Turbulence uses ~0.2 for its noise.
 const float NOISE_ABS_MEAN = 0.2228;
 const float NOISE_ABS_VARIANCE = 0.02503;

@@ -1,4 +1,4 @@
-// Walks of the sphere tree (common.h, BvhNode; laid out by host/gpu_tree.cpp): a ray tests the
+// Walks of the sphere tree (common.h, BvhNode; laid out by host/accel/gpu_tree.cpp): a ray tests the
 // spheres of the leaves whose boxes it enters, not every sphere. The walk needs no stack: it
 // enters a box's first child, or skips the subtree to the node's `next`; both move forwards, so
 // a walk makes at most one pass per node and always ends. Included by intersect.glsl.
@@ -81,7 +81,7 @@ bool occludedInTree(vec3 o, vec3 d, float tMax) {
 }
 
 // The closest sphere hit of a primary ray nearer than hit.t, into hit: the spheres listed for
-// its tile (host/tile_lists.h; the lanes of a workgroup share one tile, so the list's loads and
+// its tile (host/accel/tile_lists.h; the lanes of a workgroup share one tile, so the list's loads and
 // its loop are the same for all of them), or the tree's where the tile's list is long. The list
 // runs nearest first, so a ray stops at a sphere whose nearest point lies beyond its hit (the
 // floor's, or a sphere's): no later one can be nearer. The margin of 2^-10 is far beyond the
@@ -105,7 +105,7 @@ void closestSphereInTile(vec3 o, vec3 d, inout Hit hit) {
   countLoop(passes);
 }
 
-// The range of spheres listed for the cell of the light's shadow grid (host/shadow_grid.h)
+// The range of spheres listed for the cell of the light's shadow grid (host/accel/shadow_grid.h)
 // where the line from the light through o meets the grid's plane, if o lies between the plane
 // and half the light's height above it (the point on the plane then lies no farther from o than
 // the light does); left as it is where the light has no grid or o lies elsewhere. Past the
@@ -152,7 +152,7 @@ bool occludedInGrid(vec3 o, vec3 d, float tMax, uint light) {
   return occludedInList(first, count, o, d, tMax);
 }
 
-// True if a sphere listed for the ray's cell of tiles and light (host/shadow_lists.h: every
+// True if a sphere listed for the ray's cell of tiles and light (host/accel/shadow_lists.h: every
 // sphere that can lie between the light and a point the cell sees; the lanes of a workgroup
 // share the list) lies on the segment from o along unit d before distance tMax. Where the list
 // is long, the spheres of the light's shadow grid where the ray lands, in kernels whose spheres

@@ -2,7 +2,7 @@
 // texture returns is used as the diffuse reflection coefficient"), picked by kind in one
 // dispatch, textureColor. Each kind lives in shaders/kinds/<kind>.glsl with its point-sampled evaluation
 // (<kind>Point) and, in the box-filtered module, its footprint-filtered one (<kind>Box); its
-// host row is in host/texture_kinds.cpp and its double-precision oracle in host/texture.cpp.
+// host row is in host/scene/texture_kinds.cpp and its double-precision oracle in host/reference/texture.cpp.
 // Formulas: docs/textures.md. Adding a kind: docs/adding-a-texture.md.
 //
 // Needs (declared by the including kernel, after common.h, noise.glsl, mapping.glsl, and

@@ -20,7 +20,7 @@ awk -v limit="$limit" '
     start = 0; next
   }
   END { exit bad }
-' "$1"/host/*.cpp
+' "$1"/host/*/*.cpp
 rc=$?
 [ "$rc" -eq 0 ] && echo "every function in host/ is at most $limit lines"
 exit "$rc"

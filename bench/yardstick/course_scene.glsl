@@ -35,7 +35,7 @@ const float PLANE_Y = -2.0;  // normal (0, 1, 0), distance -2: tangent x, binorm
 const float TEX_SCALE = 5.0;
 
 // Materials (scenes/texture_include.cfg): every one has ambient 0.15. The floor is aChecker:
-// the checker kind's defaults (host/texture.cpp), 0.9 and 0.1 grey, 2 x 2 checks per tile.
+// the checker kind's defaults (host/reference/texture.cpp), 0.9 and 0.1 grey, 2 x 2 checks per tile.
 const float KA = 0.15;
 const vec3 CHECKER_COLOR1 = vec3(0.9);
 const vec3 CHECKER_COLOR2 = vec3(0.1);

@@ -12,7 +12,7 @@ const float SPHERE_SHININESS = 64.0;
 
 #include "course_scene.glsl"
 
-// The marble kind's defaults (host/texture.cpp), aMarble setting none of them.
+// The marble kind's defaults (host/reference/texture.cpp), aMarble setting none of them.
 const vec3 MARBLE_COLOR1 = vec3(0.9, 0.88, 0.85);
 const vec3 MARBLE_COLOR2 = vec3(0.15, 0.12, 0.2);
 const float MARBLE_SCALE = 4.0;

@@ -1,5 +1,5 @@
 // bricks: running bond on the (u, v) of the shape's mapping, point-sampled or averaged over the
-// footprint in closed form (box). Oracle: bricksReference (host/texture.cpp). docs/textures.md,
+// footprint in closed form (box). Oracle: bricksReference (host/reference/texture.cpp). docs/textures.md,
 // "bricks".
 //
 // `columns` C bricks per tile along u (m.params.z) and 2C rows along v, so a brick is twice as

@@ -1,5 +1,5 @@
 // checker: squares alternating on the (u, v) of the shape's mapping, point-sampled or averaged
-// over the footprint in closed form (box). Oracle: textureBlendReference (host/texture.cpp).
+// over the footprint in closed form (box). Oracle: textureBlendReference (host/reference/texture.cpp).
 #ifndef RAYTEX_KIND_CHECKER_GLSL
 #define RAYTEX_KIND_CHECKER_GLSL
 

@@ -1,5 +1,5 @@
 // dturbulence: turbulence whose octaves are damped by the slope of those below; box: as
-// turbulence. Oracle: textureBlendReference (host/texture.cpp).
+// turbulence. Oracle: textureBlendReference (host/reference/texture.cpp).
 #ifndef RAYTEX_KIND_DTURBULENCE_GLSL
 #define RAYTEX_KIND_DTURBULENCE_GLSL
 

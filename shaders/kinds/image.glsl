@@ -1,6 +1,6 @@
 // image: a picture file at its own size, bilinear at the hit (point) or averaged over the
 // footprint in its own mip chain (box; or by another method, IMAGE_FILTER: image_filters.glsl).
-// Oracle: sampleImageReference (host/reference_render.h).
+// Oracle: sampleImageReference (host/reference/reference_render.h).
 #ifndef RAYTEX_KIND_IMAGE_GLSL
 #define RAYTEX_KIND_IMAGE_GLSL
 

@@ -1,5 +1,5 @@
 // marble: veins of a sine displaced by turbulence; box: the profile band-limited to the
-// footprint. Oracle: textureBlendReference (host/texture.cpp).
+// footprint. Oracle: textureBlendReference (host/reference/texture.cpp).
 #ifndef RAYTEX_KIND_MARBLE_GLSL
 #define RAYTEX_KIND_MARBLE_GLSL
 

@@ -1,5 +1,5 @@
 // noise: Perlin noise of the solid coordinate; box: faded to its mean as the footprint nears the
-// lattice period. Oracle: textureBlendReference (host/texture.cpp).
+// lattice period. Oracle: textureBlendReference (host/reference/texture.cpp).
 #ifndef RAYTEX_KIND_NOISE_GLSL
 #define RAYTEX_KIND_NOISE_GLSL
 

@@ -1,5 +1,5 @@
 // solid_checker: cubes alternating in the solid coordinate, point-sampled or averaged over the
-// footprint in closed form (box). Oracle: textureBlendReference (host/texture.cpp).
+// footprint in closed form (box). Oracle: textureBlendReference (host/reference/texture.cpp).
 #ifndef RAYTEX_KIND_SOLID_CHECKER_GLSL
 #define RAYTEX_KIND_SOLID_CHECKER_GLSL
 

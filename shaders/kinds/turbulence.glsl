@@ -1,5 +1,5 @@
 // turbulence: a sum of |noise| octaves; box: octaves finer than the footprint fade to their
-// mean. Oracle: textureBlendReference (host/texture.cpp).
+// mean. Oracle: textureBlendReference (host/reference/texture.cpp).
 #ifndef RAYTEX_KIND_TURBULENCE_GLSL
 #define RAYTEX_KIND_TURBULENCE_GLSL
 

@@ -1,5 +1,5 @@
 // wood: rings around the solid cube's y axis wobbled by turbulence; box: the sawtooth averaged
-// in closed form. Oracle: textureBlendReference (host/texture.cpp).
+// in closed form. Oracle: textureBlendReference (host/reference/texture.cpp).
 #ifndef RAYTEX_KIND_WOOD_GLSL
 #define RAYTEX_KIND_WOOD_GLSL
 

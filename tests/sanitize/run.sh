@@ -26,7 +26,7 @@ supp=$PWD/tests/sanitize
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:strict_string_checks=1:detect_stack_use_after_return=1
 export LSAN_OPTIONS=suppressions=$supp/lsan.supp:print_suppressions=0
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
-export RAYTEX_SANITIZED=1  # tests/cli_test.sh, output_test.sh: skip the address-space limit tests (ASan's shadow needs terabytes)
+export RAYTEX_SANITIZED=1  # tests/app/cli_test.sh, output_test.sh: skip the address-space limit tests (ASan's shadow needs terabytes)
 SWEEPS='BakedKernelsMatchTheUniformBuffers|(CourseScenes|Fields)RenderWhatTheOneKernelRenders|NoiseFilterTest|Shadow(Lists|Grids)RenderWhatTheTreeWalkRenders|RendersWhatTheLoopOverEverySphereRenders'
 # Image comparisons of kernel variants and filters, bit for bit or against a reference (the same
 # host path as the rest: passes, the coverage filter's dispatches and supersampling run here in

@@ -1,5 +1,5 @@
 // Test scenes' lists with every cell's shadow list marked long, so that each shadow ray between
-// a grid's plane and its light looks its grid up (host/shadow_grid.h), and the others walk the
+// a grid's plane and its light looks its grid up (host/accel/shadow_grid.h), and the others walk the
 // tree: the lists built as packCamera builds them, the grids after the marking.
 #pragma once
 

@@ -1,4 +1,4 @@
-// Per-pixel truths from the CPU double reference (host/reference.h), to hold a kernel image
+// Per-pixel truths from the CPU double reference (host/reference/reference.h), to hold a kernel image
 // against: the closest hit through each pixel, the pixels wholly on an object, and how far a
 // kernel texture coordinate lies from the reference's.
 #pragma once
