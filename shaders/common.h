@@ -6,6 +6,8 @@
 #ifndef RAYTEX_COMMON_H
 #define RAYTEX_COMMON_H
 
+#include "kinds/kinds.h"
+
 #ifdef __cplusplus
 #include <cstdint>
 #include <glm/vec3.hpp>
@@ -143,24 +145,9 @@ using uvec4 = glm::uvec4;
 #define LOOP_PASSES_PER_SAMPLE (4u * (NOISE_MAX_OCTAVES + 1u) + 9u + 33u)
 #define STATUS_WORDS 4
 
-// Texture kinds (Material.textureKind; one row each in host/scene/texture_kinds.cpp, GLSL in
-// shaders/kinds/). Bit (1 << kind) of SPEC_SPHERE_TEXTURE_KINDS and
-// SPEC_PLANE_TEXTURE_KINDS says the kind is on a sphere or a plane; absent kinds compile to
-// nothing.
-#define TEX_NONE 0
-#define TEX_IMAGE 1
-#define TEX_CHECKER 2
-#define TEX_SOLID_CHECKER 3
-#define TEX_NOISE 4
-#define TEX_MARBLE 5
-#define TEX_WOOD 6
-#define TEX_TURBULENCE 7
-#define TEX_DTURBULENCE 8
-#define TEX_BRICKS 9
-#define TEX_KIND_COUNT 10
-// The kinds that read the 2D (u, v) of the shape's mapping; the others read the solid coordinate
-// (each kind's row in host/scene/texture_kinds.cpp says which; a test checks that the two agree).
-#define TEX_2D_KINDS ((1u << TEX_IMAGE) | (1u << TEX_CHECKER) | (1u << TEX_BRICKS))
+// Texture kinds (Material.textureKind): TEX_NONE, TEX_<NAME> per row of kinds/kinds.h, and
+// TEX_2D_KINDS. Bit (1 << kind) of SPEC_SPHERE_TEXTURE_KINDS and SPEC_PLANE_TEXTURE_KINDS says
+// the kind is on a sphere or a plane; absent kinds compile to nothing.
 
 // Specialisation constant ids.
 #define SPEC_SPHERE_TEXTURE_KINDS 0  // uint bit mask of the TEX_* kinds on spheres

@@ -74,16 +74,16 @@ double dturbulenceReference(const TextureDesc& t, const TexCoordD& tc) {
 }
 }  // namespace
 
+// A case per row of shaders/kinds/kinds.h whose kind returns a blend factor (not FILTER IMAGE).
+#define RAYTEX_REFERENCE_IMAGE(Kind, fn)
+#define RAYTEX_REFERENCE_CLOSED_FORM(Kind, fn) \
+  case TextureKind::Kind: return fn##Reference(texture, tc);
+#define RAYTEX_REFERENCE_BAND_LIMITED(Kind, fn) RAYTEX_REFERENCE_CLOSED_FORM(Kind, fn)
+#define RAYTEX_REFERENCE_ROW(ID, NAME, Kind, fn, file, COORD, FILTER, TABLE, COST) RAYTEX_REFERENCE_##FILTER(Kind, fn)
+
 double textureBlendReference(const TextureDesc& texture, const TexCoordD& tc) {
   switch (texture.kind) {
-    case TextureKind::Checker: return checkerReference(texture, tc);
-    case TextureKind::SolidChecker: return solidCheckerReference(texture, tc);
-    case TextureKind::Noise: return noiseReference(texture, tc);
-    case TextureKind::Marble: return marbleReference(texture, tc);
-    case TextureKind::Wood: return woodReference(texture, tc);
-    case TextureKind::Turbulence: return turbulenceReference(texture, tc);
-    case TextureKind::DTurbulence: return dturbulenceReference(texture, tc);
-    case TextureKind::Bricks: return bricksReference(texture, tc);
+    RAYTEX_TEXTURE_KINDS(RAYTEX_REFERENCE_ROW)
     default: break;
   }
   throw std::invalid_argument(std::string("textureBlendReference: no CPU reference for texture kind ") +

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "error.h"
+#include "kinds/kinds.h"
 
 #include <glm/vec3.hpp>
 
@@ -12,21 +13,15 @@
 #include <string>
 #include <vector>
 
-// Values match TEX_* in shaders/common.h (checked in texture_kinds.cpp); each kind's row is in
+// A value per row of shaders/kinds/kinds.h, equal to its TEX_* id; the kind's host row is in
 // texture_kinds.cpp.
+#define RAYTEX_KIND_ENUM(ID, NAME, Kind, fn, file, COORD, FILTER, TABLE, COST) Kind = ID,
 enum class TextureKind {
-  None = 0,
-  Image,
-  Checker,
-  SolidChecker,
-  Noise,
-  Marble,
-  Wood,
-  Turbulence,
-  DTurbulence,
-  Bricks,
-  Count,  // the number of values
+  None = TEX_NONE,
+  RAYTEX_TEXTURE_KINDS(RAYTEX_KIND_ENUM)
+  Count = TEX_KIND_COUNT,  // the number of values
 };
+#undef RAYTEX_KIND_ENUM
 
 // How an image texture continues outside [0, 1]: tiled, or (clamp, a decal) its edge texels
 // extended, as CLAMP_TO_EDGE.

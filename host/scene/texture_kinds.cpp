@@ -3,14 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
-
-static_assert(int(TextureKind::None) == TEX_NONE && int(TextureKind::Image) == TEX_IMAGE &&
-                  int(TextureKind::Checker) == TEX_CHECKER && int(TextureKind::SolidChecker) == TEX_SOLID_CHECKER &&
-                  int(TextureKind::Noise) == TEX_NOISE && int(TextureKind::Marble) == TEX_MARBLE &&
-                  int(TextureKind::Wood) == TEX_WOOD && int(TextureKind::Turbulence) == TEX_TURBULENCE &&
-                  int(TextureKind::DTurbulence) == TEX_DTURBULENCE && int(TextureKind::Bricks) == TEX_BRICKS &&
-                  int(TextureKind::Count) == TEX_KIND_COUNT,
-              "TextureKind must match TEX_* in common.h");
+#include <utility>
 
 namespace {
 
@@ -61,61 +54,100 @@ double solidCheckerPeriod(const TextureDesc& t) { return 2.0 / double(t.squares)
 // The noise lattice repeats every 256 (marble's sine every 2, which divides it).
 double latticePeriod(const TextureDesc& t) { return 256.0 / double(t.scale); }
 
-// --- The kinds, in TEX_* order ---
-// Built on first use (textureKinds), not at static initialisation: other files' statics may
-// read the table.
-std::vector<TextureKindInfo> makeKinds() {
-  using K = TextureKind;
-  // The keys, each defined once and shared by the kinds that take it.
-  const TextureKey kColor1 = colourKey("color1", MaterialSlot::Color1, &TextureDesc::color1, "the colour at blend 0");
-  const TextureKey kColor2 = colourKey("color2", MaterialSlot::Color2, &TextureDesc::color2, "the colour at blend 1");
-  const TextureKey kScale =
+// --- The kinds' host rows: <fn>Row per row of shaders/kinds/kinds.h ---
+
+// The keys, each defined once and shared by the kinds that take it.
+struct Keys {
+  TextureKey color1 = colourKey("color1", MaterialSlot::Color1, &TextureDesc::color1, "the colour at blend 0");
+  TextureKey color2 = colourKey("color2", MaterialSlot::Color2, &TextureDesc::color2, "the colour at blend 1");
+  TextureKey scale =
       numberKey("scale", MaterialSlot::ParamX, positive(), &TextureDesc::scale, "frequency multiplier of the coordinate");
-  const TextureKey kStrength =
+  TextureKey strength =
       numberKey("strength", MaterialSlot::ParamY, KeyRange{}, &TextureDesc::strength, "amount of turbulence");
-  const TextureKey kSquares =
+  TextureKey squares =
       numberKey("squares", MaterialSlot::ParamZ, positive(), &TextureDesc::squares, "checks per side of one tile");
-  const TextureKey kOctaves =
+  TextureKey octaves =
       wholeKey("octaves", MaterialSlot::Octaves, wholeFrom(1, 16), &TextureDesc::octaves, "noise octaves summed");
-  const TextureKey kColumns = wholeKey("columns", MaterialSlot::ParamZ, wholeFrom(1, 1024), &TextureDesc::columns,
-                                       "bricks per tile along u (rows: twice as many)");
-  const TextureKey kMortar = numberKey("mortar", MaterialSlot::ParamW, KeyRange{0.0, 0.5, false, true, false},
-                                       &TextureDesc::mortar, "joint width, a fraction of a brick's height");
-  const TextureKey kFile{"file", KeyType::File, MaterialSlot::ImageFile, {},
-                         "PNG or JPEG file, relative to the scene file that names it"};
-  TextureKey wrap{"wrap", KeyType::Word, MaterialSlot::ImageWrap, {},
-                  "repeat: the image tiles; clamp: once, its edge texels beyond (a decal)"};
-  wrap.words = {"repeat", "clamp"};
-  wrap.setWord = setWrap;
-  wrap.word = wrapWord;
-  const std::vector<TextureKey> noiseKeys = {kColor1, kColor2, kScale, kStrength, kOctaves};
-  TextureDesc checker = defaults(K::Checker, glm::vec3(0.9f), glm::vec3(0.1f));
-  checker.squares = 2.0f;
-  TextureDesc solidChecker = defaults(K::SolidChecker, glm::vec3(0.9f, 0.1f, 0.1f), glm::vec3(0.9f));
-  solidChecker.squares = 4.0f;
-  TextureDesc noise = defaults(K::Noise, glm::vec3(0.05f, 0.1f, 0.4f), glm::vec3(0.9f, 0.9f, 0.8f));
-  noise.scale = 8.0f;
-  const glm::vec3 turbulence1(0.95f, 0.85f, 0.6f), turbulence2(0.3f, 0.1f, 0.05f);
-  TextureDesc bricks = defaults(K::Bricks, glm::vec3(0.55f, 0.20f, 0.15f), glm::vec3(0.75f, 0.74f, 0.70f));
-  bricks.columns = 4;
-  bricks.mortar = 0.1f;
-  return {
-      {K::Image, "image", false, false, {kFile, wrap}, defaults(K::Image, glm::vec3(1.0f), glm::vec3(0.0f)), noPeriod, 67.0},
-      {K::Checker, "checker", false, false, {kColor1, kColor2, kSquares}, checker, noPeriod, 12.0},
-      {K::SolidChecker, "solid_checker", true, false, {kColor1, kColor2, kSquares}, solidChecker, solidCheckerPeriod, 7.0},
-      {K::Noise, "noise", true, true, {kColor1, kColor2, kScale}, noise, latticePeriod, 77.0},
-      {K::Marble, "marble", true, true, noiseKeys,
-       noiseDefaults(K::Marble, {0.9f, 0.88f, 0.85f}, {0.15f, 0.12f, 0.2f}, 4.0f, 6.0f, 6), latticePeriod, 101.0},
-      // Wood's rings are not periodic.
-      {K::Wood, "wood", true, true, noiseKeys,
-       noiseDefaults(K::Wood, {0.75f, 0.5f, 0.25f}, {0.35f, 0.18f, 0.07f}, 8.0f, 0.25f, 4), noPeriod, 94.0},
-      {K::Turbulence, "turbulence", true, true, noiseKeys,
-       noiseDefaults(K::Turbulence, turbulence1, turbulence2, 6.0f, 1.25f, 6), latticePeriod, 92.0},
-      // Derivative turbulence damps octaves on slopes, so it needs more gain for the same contrast.
-      {K::DTurbulence, "dturbulence", true, true, noiseKeys,
-       noiseDefaults(K::DTurbulence, turbulence1, turbulence2, 6.0f, 2.5f, 6), latticePeriod, 128.0},
-      {K::Bricks, "bricks", false, false, {kColor1, kColor2, kColumns, kMortar}, bricks, noPeriod, 11.0},
-  };
+  TextureKey columns = wholeKey("columns", MaterialSlot::ParamZ, wholeFrom(1, 1024), &TextureDesc::columns,
+                                "bricks per tile along u (rows: twice as many)");
+  TextureKey mortar = numberKey("mortar", MaterialSlot::ParamW, KeyRange{0.0, 0.5, false, true, false},
+                                &TextureDesc::mortar, "joint width, a fraction of a brick's height");
+  TextureKey file{"file", KeyType::File, MaterialSlot::ImageFile, {},
+                  "PNG or JPEG file, relative to the scene file that names it"};
+  TextureKey wrap = wrapKey();
+  std::vector<TextureKey> noise() const { return {color1, color2, scale, strength, octaves}; }
+
+  static TextureKey wrapKey() {
+    TextureKey k{"wrap", KeyType::Word, MaterialSlot::ImageWrap, {},
+                 "repeat: the image tiles; clamp: once, its edge texels beyond (a decal)"};
+    k.words = {"repeat", "clamp"};
+    k.setWord = setWrap;
+    k.word = wrapWord;
+    return k;
+  }
+};
+
+// What a kind's host row adds to its shared row: its keys, its defaults and its solid period.
+struct HostRow {
+  std::vector<TextureKey> keys;
+  TextureDesc defaults;
+  double (*solidPeriod)(const TextureDesc&);
+};
+
+const glm::vec3 kTurbulence1(0.95f, 0.85f, 0.6f), kTurbulence2(0.3f, 0.1f, 0.05f);
+
+HostRow imageRow(const Keys& k, TextureKind kind) {
+  return {{k.file, k.wrap}, defaults(kind, glm::vec3(1.0f), glm::vec3(0.0f)), noPeriod};
+}
+HostRow checkerRow(const Keys& k, TextureKind kind) {
+  TextureDesc d = defaults(kind, glm::vec3(0.9f), glm::vec3(0.1f));
+  d.squares = 2.0f;
+  return {{k.color1, k.color2, k.squares}, d, noPeriod};
+}
+HostRow solidCheckerRow(const Keys& k, TextureKind kind) {
+  TextureDesc d = defaults(kind, glm::vec3(0.9f, 0.1f, 0.1f), glm::vec3(0.9f));
+  d.squares = 4.0f;
+  return {{k.color1, k.color2, k.squares}, d, solidCheckerPeriod};
+}
+HostRow noiseRow(const Keys& k, TextureKind kind) {
+  TextureDesc d = defaults(kind, glm::vec3(0.05f, 0.1f, 0.4f), glm::vec3(0.9f, 0.9f, 0.8f));
+  d.scale = 8.0f;
+  return {{k.color1, k.color2, k.scale}, d, latticePeriod};
+}
+HostRow marbleRow(const Keys& k, TextureKind kind) {
+  return {k.noise(), noiseDefaults(kind, {0.9f, 0.88f, 0.85f}, {0.15f, 0.12f, 0.2f}, 4.0f, 6.0f, 6), latticePeriod};
+}
+// Wood's rings are not periodic.
+HostRow woodRow(const Keys& k, TextureKind kind) {
+  return {k.noise(), noiseDefaults(kind, {0.75f, 0.5f, 0.25f}, {0.35f, 0.18f, 0.07f}, 8.0f, 0.25f, 4), noPeriod};
+}
+HostRow turbulenceRow(const Keys& k, TextureKind kind) {
+  return {k.noise(), noiseDefaults(kind, kTurbulence1, kTurbulence2, 6.0f, 1.25f, 6), latticePeriod};
+}
+// Derivative turbulence damps octaves on slopes, so it needs more gain for the same contrast.
+HostRow dturbulenceRow(const Keys& k, TextureKind kind) {
+  return {k.noise(), noiseDefaults(kind, kTurbulence1, kTurbulence2, 6.0f, 2.5f, 6), latticePeriod};
+}
+HostRow bricksRow(const Keys& k, TextureKind kind) {
+  TextureDesc d = defaults(kind, glm::vec3(0.55f, 0.20f, 0.15f), glm::vec3(0.75f, 0.74f, 0.70f));
+  d.columns = 4;
+  d.mortar = 0.1f;
+  return {{k.color1, k.color2, k.columns, k.mortar}, d, noPeriod};
+}
+
+TextureKindInfo kindInfo(TextureKind kind, const char* name, bool solid, bool needsNoise, double cost, HostRow row) {
+  return {kind, name, solid, needsNoise, std::move(row.keys), row.defaults, row.solidPeriod, cost};
+}
+
+// The rows of shaders/kinds/kinds.h, in TEX_* order, each with its host row. Built on first use
+// (textureKinds), not at static initialisation: other files' statics may read the table.
+std::vector<TextureKindInfo> makeKinds() {
+  const Keys keys;
+#define RAYTEX_KIND_INFO(ID, NAME, Kind, fn, file, COORD, FILTER, TABLE, COST)                          \
+  kindInfo(TextureKind::Kind, #file, RAYTEX_KIND_IS_UV_##COORD == 0u, RAYTEX_KIND_IS_NOISE_##TABLE == 1u, \
+           COST, fn##Row(keys, TextureKind::Kind)),
+  return {RAYTEX_TEXTURE_KINDS(RAYTEX_KIND_INFO)};
+#undef RAYTEX_KIND_INFO
 }
 
 // "a, b or c".

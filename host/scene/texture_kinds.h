@@ -1,8 +1,9 @@
-// The texture kinds as the host knows them: one row per kind with its scene-file name, its
-// keys (type, default, valid range, where each is packed for the GPU) and the resources it
-// needs. The parser, its messages, --help, the GPU packing and docs/scene-format.md's table all
-// read these rows. The kind's GLSL is shaders/kinds/<name>.glsl; its double-precision oracle is
-// in texture.cpp. Adding a kind: docs/adding-a-texture.md. No Vulkan, no oracle.
+// The texture kinds as the host knows them: per row of shaders/kinds/kinds.h (its name, coordinate,
+// noise table and cost) its host row (texture_kinds.cpp: its keys with their type, default, valid
+// range and where each is packed for the GPU, and its solid period). The parser, its messages,
+// --help, the GPU packing and docs/scene-format.md's table all read these rows. The kind's GLSL is
+// shaders/kinds/<file>.glsl; its double-precision oracle is in host/reference/texture.cpp.
+// Adding a kind: docs/adding-a-texture.md. No Vulkan, no oracle.
 #pragma once
 
 #include "common.h"
@@ -54,8 +55,8 @@ struct TextureKindInfo {
   // offset modulo it, in double, so the pattern stays exact far from the origin).
   double (*solidPeriod)(const TextureDesc&);
   // x86 instructions per pixel its code adds to a point-sampled kernel on lavapipe, for every
-  // pixel the kernel renders, whatever the pixel shows (tile_kernels.h; measured:
-  // docs/performance.md, "Tile kernels").
+  // pixel the kernel renders, whatever the pixel shows (its COST in shaders/kinds/kinds.h;
+  // tile_kernels.h weighs it: docs/performance.md, "Tile kernels").
   double kernelCost = 0;
 };
 

@@ -1,5 +1,5 @@
-// The texture-kind table (host/scene/texture_kinds.h): names, rows in TEX_* order, the docs' table
-// generated from it, and the GPU packing each row describes.
+// The texture-kind table (host/scene/texture_kinds.h over shaders/kinds/kinds.h): names, rows in
+// TEX_* order, the docs' table generated from it, and the GPU packing each row describes.
 #include "texture_kinds.h"
 
 #include "support/files.h"
@@ -9,11 +9,6 @@
 #include <fstream>
 #include <sstream>
 #include <string>
-
-namespace {
-
-
-}  // namespace
 
 TEST(TextureKinds, RowsAreInKindOrderWithUniqueNames) {
   const auto& kinds = textureKinds();
@@ -37,7 +32,8 @@ TEST(TextureKinds, SolidAndNoiseFlags) {
   EXPECT_FALSE(textureKindInfo(TextureKind::SolidChecker).needsNoise);
 }
 
-// The 2D kinds of the table are the ones the kernel computes (u, v) for (common.h).
+// The host's 2D kinds are the ones the kernel computes (u, v) for: both read COORD of
+// shaders/kinds/kinds.h, the host through its row, the kernel through TEX_2D_KINDS.
 TEST(TextureKinds, TwoDimensionalKindsMatchTheKernel) {
   uint32_t twoD = 0;
   for (const TextureKindInfo& info : textureKinds())
