@@ -1,4 +1,5 @@
 #include "cli.h"
+#include "output_formats.h"
 #include "suggest.h"
 
 #include "texture_kinds.h"
@@ -35,8 +36,8 @@ uint32_t parseSpp(const std::string& flag, const std::string& text) {
 }
 
 std::string parseFormat(const std::string& flag, const std::string& text) {
-  if (text != "png" && text != "exr" && text != "pfm")
-    throw UsageError(flag + " expects png, exr or pfm, got '" + text + "'");
+  const OutputFormatInfo* format = findOutputFormat(text);
+  if (!format || text != format->name) throw UsageError(flag + " expects " + outputFormatWords() + ", got '" + text + "'");
   return text;
 }
 
@@ -381,8 +382,9 @@ void checkOutputOptions(const CliArgs& cli, const std::vector<std::string>& give
   auto has = [&](const char* name) { return std::find(given.begin(), given.end(), name) != given.end(); };
   checkCompare(cli, given);
   const std::string format = outputFormatName(cli.render);
-  if (has("--depth") && format != "png") throw UsageError("--depth applies to a PNG output");
-  if (has("--half") && format != "exr") throw UsageError("--half applies to an EXR output");
+  for (const OutputFormatInfo& info : outputFormats())
+    if (info.option && has(info.option) && format != info.name)
+      throw UsageError(std::string(info.option) + " applies to " + info.output);
   if (cli.render.passes.empty()) return;
   if (cli.render.output == "-") throw UsageError("--aov writes files beside the image; -o - writes one PNG to standard output");
   if (cli.render.reference) throw UsageError("--aov comes from the Vulkan kernel; --reference writes the image only");

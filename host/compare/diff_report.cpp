@@ -2,7 +2,7 @@
 
 #include "error.h"
 #include "flip.h"
-#include "image_read.h"
+#include "output_formats.h"
 #include "output_file.h"
 
 #include <algorithm>

@@ -1,7 +1,6 @@
 #include "image_read.h"
 
 #include "error.h"
-#include "float_input.h"
 #include "image_io.h"
 #include "image_load.h"
 #include "input_file.h"
@@ -141,12 +140,8 @@ LinearImage readSixteenBit(const std::string& path, uint64_t maxBytes) {
 
 }  // namespace
 
-LinearImage readLinearImage(const std::string& path, uint64_t maxBytes) {
-  const std::string ext = lowerExtension(path);
-  // EXR and PFM hold linear values as stored, of high dynamic range.
-  if (ext == "exr") return LinearImage{readExr(path, maxBytes), false};
-  if (ext == "pfm") return LinearImage{readPfm(path, maxBytes), false};
-  // Every other name goes to the PNG and JPEG readers, which name what they refuse.
-  if (ext == "png" && sixteenBitPng(path)) return readSixteenBit(path, maxBytes);
+LinearImage readSrgbImage(const std::string& path, uint64_t maxBytes) {
+  // The PNG and JPEG readers name what they refuse, whatever the name.
+  if (lowerExtension(path) == "png" && sixteenBitPng(path)) return readSixteenBit(path, maxBytes);
   return readEightBit(path, maxBytes);
 }

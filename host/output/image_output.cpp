@@ -2,22 +2,22 @@
 
 #include "band_sink.h"
 #include "error.h"
-#include "exr_output.h"
+#include "output_formats.h"
 #include "pfm_output.h"
 #include "png_output.h"
 
 #include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <set>
 
 namespace {
 
-// Attribute names every EXR header defines, or that name its parts: a string attribute of the
-// same name would replace or contradict them.
-const char* const kExrHeaderNames[] = {"channels", "compression", "dataWindow", "displayWindow",
-                                       "lineOrder", "pixelAspectRatio", "screenWindowCenter",
-                                       "screenWindowWidth", "tiles", "type", "name", "version",
-                                       "chunkCount", "view", "multiView"};
+// "EXR" for "exr".
+std::string upper(std::string text) {
+  for (char& c : text) c = char(std::toupper(static_cast<unsigned char>(c)));
+  return text;
+}
 
 // Why `key` cannot be a PNG keyword, or null.
 const char* badKeyword(const std::string& key) {
@@ -35,7 +35,7 @@ void checkSpec(const OutputSpec& spec) {
                                          std::to_string(spec.height) + " at " + std::to_string(spec.pngDepth) +
                                          " bits");
   checkMetadata(spec.metadata, spec.format);
-  if (spec.path == "-" && spec.format != OutputFormat::Exr && !spec.passes.empty())
+  if (spec.path == "-" && !outputFormatInfo(spec.format).passesInside && !spec.passes.empty())
     throw UsageError("passes beside standard output need files of their own: name an output file, or write EXR");
 }
 
@@ -50,19 +50,20 @@ std::unique_ptr<BandSink> passSink(const OutputSpec& spec, size_t index) {
 }  // namespace
 
 void checkMetadata(const Metadata& metadata, OutputFormat format) {
+  const OutputFormatInfo& info = outputFormatInfo(format);
   std::set<std::string> seen;
   for (const auto& [key, value] : metadata) {
     if (const char* why = badKeyword(key)) throw UsageError("metadata key '" + key + "': " + why);
     if (!seen.insert(key).second) throw UsageError("metadata key '" + key + "' is given twice");
     if (value.find('\0') != std::string::npos) throw UsageError("metadata value of '" + key + "' holds a NUL byte");
-    if (format == OutputFormat::Exr &&
-        std::find(std::begin(kExrHeaderNames), std::end(kExrHeaderNames), key) != std::end(kExrHeaderNames))
-      throw UsageError("metadata key '" + key + "' names an attribute every EXR file defines");
+    const auto& reserved = info.reservedKeys;
+    if (std::find(reserved.begin(), reserved.end(), key) != reserved.end())
+      throw UsageError("metadata key '" + key + "' names an attribute every " + upper(info.name) + " file defines");
   }
 }
 
 std::string passFilePath(const OutputSpec& spec, Pass pass) {
-  if (spec.format == OutputFormat::Exr) return "";
+  if (outputFormatInfo(spec.format).passesInside) return "";
   const PassInfo& info = passInfo(pass);
   const std::string stem = std::filesystem::path(spec.path).replace_extension().string();
   return stem + "." + info.name + (info.fitsUnit ? ".png" : ".pfm");
@@ -72,13 +73,8 @@ ImageOutput::ImageOutput(const OutputSpec& spec) : spec_(spec) {
   checkSpec(spec);
   rowWritten_.assign(size_t(spec.height), false);
   paths_.push_back(spec.path);
-  if (spec.format == OutputFormat::Exr)
-    sinks_.push_back(makeExrSink(spec));
-  else if (spec.format == OutputFormat::Png)
-    sinks_.push_back(makePngSink(spec.path, spec.width, spec.height, spec.pngDepth, -1, 3, spec.metadata));
-  else
-    sinks_.push_back(makePfmSink(spec.path, spec.width, spec.height, -1, 3));
-  if (spec.format == OutputFormat::Exr) return;
+  sinks_.push_back(outputFormatInfo(spec.format).writer(spec));
+  if (outputFormatInfo(spec.format).passesInside) return;
   for (size_t i = 0; i < spec.passes.size(); ++i) {
     paths_.push_back(passFilePath(spec, spec.passes[i]));
     sinks_.push_back(passSink(spec, i));

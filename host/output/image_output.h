@@ -23,6 +23,7 @@
 #pragma once
 
 #include "output_file.h"
+#include "output_formats.h"
 #include "passes.h"
 
 #include <cstddef>

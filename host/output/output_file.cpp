@@ -312,18 +312,6 @@ void writePngAtomic(const std::string& path, const ImageRGBA8& image) {
 
 void writeOutput(const std::string& path, const std::vector<uint8_t>& bytes) { writeFileAtomic(path, bytes); }
 
-OutputFormat outputFormatFor(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  if (ext == ".png") return OutputFormat::Png;
-  if (ext == ".exr") return OutputFormat::Exr;
-  if (ext == ".pfm") return OutputFormat::Pfm;
-  struct stat st;
-  if (path == "-" || (stat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode) && !S_ISDIR(st.st_mode)))
-    return OutputFormat::Png;  // written through whatever its name
-  throw UsageError("'" + path + "': unknown output format (supported: .png, .exr, .pfm)");
-}
-
 void finishStdout(FILE* out) {
   errno = 0;
   bool failed = fflush(out) != 0;

@@ -24,14 +24,6 @@
 #include <string>
 #include <vector>
 
-// The format an output file is written in.
-enum class OutputFormat { Png, Exr, Pfm };
-
-// The format `path`'s extension names: .png, .exr or .pfm, any case. Standard output ("-") and
-// existing devices and FIFOs are PNG unless their name ends in one of these. Throws UsageError
-// for any other path ("'x.jpg': unknown output format (supported: .png, .exr, .pfm)").
-OutputFormat outputFormatFor(const std::string& path);
-
 // One output written as described above, in one or several writes: opened (the temporary
 // created, or the device or FIFO opened) on construction, made visible by commit(). Destroyed
 // without commit, it removes its temporary and the path keeps what it held. Every failure

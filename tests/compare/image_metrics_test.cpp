@@ -6,7 +6,7 @@
 #include "float_memo.h"
 #include "image_io.h"
 #include "image_metrics.h"
-#include "image_read.h"
+#include "output_formats.h"
 #include "output_file.h"
 #include "support/files.h"
 

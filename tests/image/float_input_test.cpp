@@ -5,7 +5,7 @@
 #include "float_input.h"
 #include "image_metrics.h"
 #include "image_output.h"
-#include "image_read.h"
+#include "output_formats.h"
 #include "support/band_images.h"
 #include "support/files.h"
 #include "support/format.h"

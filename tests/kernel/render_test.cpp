@@ -12,7 +12,7 @@
 #include "flip.h"
 #include "image_io.h"
 #include "image_metrics.h"
-#include "image_read.h"
+#include "output_formats.h"
 #include "output_file.h"
 #include "image_load.h"
 #include "parser.h"
