@@ -9,6 +9,7 @@
 // Usage: raytex_bench_frames SCENE WIDTH HEIGHT FRAMES [SAMPLES_PER_SIDE [baked|unbaked [point|box
 //        [single|progressive [tiles|one]]]]]
 #include "gpu_scene.h"
+#include "kernel_plan.h"
 #include "parser.h"
 #include "renderer.h"
 
@@ -44,11 +45,10 @@ int main(int argc, char** argv) {
     kernel.bakeValues = baked;
     kernel.progressive = progressive;
     const KernelKey key = kernelKey(scene, kernel);
-    preparePipeline(r, key);
-    if (tiles && r.device.lavapipe && bandCount(r) == 1) {  // tile kernels wherever they save, as raytex bench
-      const TilePlan plan = planTileKernels(scene, {key.shape.sphereKinds, key.shape.planeKinds});
-      if (tileKernelsPay(plan, INFINITY)) prepareTileKernels(r, key, plan);
-    }
+    if (tiles)  // the kernel plan's kernels for the steady frame, as raytex bench
+      prepareFrameKernels(r, scene, key, INFINITY);
+    else
+      preparePipeline(r, key);
     renderSample(r, 0);
     for (int i = 0; i < frames; ++i) renderSample(r, progressive ? uint32_t(i + 1) % (side * side) : 0);
   } catch (const std::exception& e) {

@@ -4,6 +4,7 @@
 // 22.3) cannot shorten start-up, so raytex keeps no pipeline cache file (docs/performance.md).
 // Usage: raytex_bench_pipeline_cache [DEVICE_INDEX]
 #include "device.h"
+#include "bindings.h"
 #include "pipeline.h"
 #include "trace_point_spv.h"
 

@@ -5,9 +5,51 @@
 #include "shadow_lists.h"
 
 #include <algorithm>
+#include <cstddef>
 #include <cstring>
 #include <string>
 #include <vector>
+
+namespace {
+
+bool withPasses(const KernelKey& key) { return key.passMask != 0; }
+bool withBakedValues(const KernelKey& key) { return key.baked.enabled != 0; }
+
+std::vector<SpecConstant> makeSpecConstants() {
+#define RAYTEX_AT(field) uint32_t(offsetof(KernelKey, field))
+  return {
+      {SPEC_SPHERE_TEXTURE_KINDS, RAYTEX_AT(shape.sphereKinds), 1, nullptr},
+      {SPEC_OUTPUT_MODE, RAYTEX_AT(outputMode), 1, nullptr},
+      {SPEC_SAMPLES_PER_SIDE, RAYTEX_AT(samplesPerSide), 1, nullptr},
+      {SPEC_PROGRESSIVE, RAYTEX_AT(progressive), 1, nullptr},
+      {SPEC_PLANE_TEXTURE_KINDS, RAYTEX_AT(shape.planeKinds), 1, nullptr},
+      {SPEC_SPHERE_COUNT, RAYTEX_AT(shape.sphereCount), 1, nullptr},
+      {SPEC_PLANE_COUNT, RAYTEX_AT(shape.planeCount), 1, nullptr},
+      {SPEC_LIGHT_COUNT, RAYTEX_AT(shape.lightCount), 1, nullptr},
+      {SPEC_BAKED, RAYTEX_AT(baked.enabled), 1, nullptr},
+      {SPEC_BAKED_MATERIAL_COUNT, RAYTEX_AT(baked.materialCount), 1, nullptr},
+      {SPEC_TEXTURE_PLACEMENT, RAYTEX_AT(shape.placed), 1, nullptr},
+      {SPEC_IMAGE_COUNT, RAYTEX_AT(shape.imageCount), 1, nullptr},
+      {SPEC_SPHERE_TREE, RAYTEX_AT(shape.sphereTree), 1, nullptr},
+      {SPEC_LOOP_BUDGET, RAYTEX_AT(loopBudget), 1, nullptr},
+      {SPEC_TILE_LISTS, RAYTEX_AT(shape.tileLists), 1, nullptr},
+      {SPEC_TILE_ORDER, RAYTEX_AT(tileOrder), 1, nullptr},
+      {SPEC_SHADOW_LISTS, RAYTEX_AT(shape.shadowLists), 1, nullptr},
+      // Only the pass variant declares the pass mask: without passes the constants are as before it.
+      {SPEC_PASS_MASK, RAYTEX_AT(passMask), 1, withPasses},
+      {SPEC_TEXTURE_FILTER, RAYTEX_AT(textureFilter), 1, nullptr},
+      {SPEC_IMAGE_FILTER, RAYTEX_AT(imageFilter), 1, nullptr},
+      {SPEC_BAKED_WORDS, RAYTEX_AT(baked.words), BAKED_WORD_COUNT, withBakedValues},
+  };
+#undef RAYTEX_AT
+}
+
+}  // namespace
+
+const std::vector<SpecConstant>& specConstants() {
+  static const std::vector<SpecConstant> constants = makeSpecConstants();
+  return constants;
+}
 
 uint32_t kernelFilter(TextureFilter filter) {
   switch (filter) {

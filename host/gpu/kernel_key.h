@@ -9,6 +9,9 @@
 
 #include <array>
 #include <cstdint>
+#include <cstring>
+#include <type_traits>
+#include <vector>
 
 struct GpuScene;
 
@@ -26,12 +29,7 @@ struct SceneShape {
   uint32_t tileLists = 0;  // SPEC_TILE_LISTS (a VkBool32): primary rays test their tile's spheres
   uint32_t shadowLists = 0;  // SPEC_SHADOW_LISTS (a VkBool32): shadow rays test their cell's and light's
   uint32_t kinds() const { return sphereKinds | planeKinds; }
-  bool operator==(const SceneShape& o) const {
-    return sphereKinds == o.sphereKinds && planeKinds == o.planeKinds && sphereCount == o.sphereCount &&
-           planeCount == o.planeCount && lightCount == o.lightCount && placed == o.placed &&
-           imageCount == o.imageCount && sphereTree == o.sphereTree && tileLists == o.tileLists &&
-           shadowLists == o.shadowLists;
-  }
+  bool operator==(const SceneShape& o) const { return std::memcmp(this, &o, sizeof(SceneShape)) == 0; }
 };
 
 // A scene's spheres, planes, lights and materials as the words of SPEC_BAKED_WORDS (laid out as
@@ -40,9 +38,7 @@ struct BakedScene {
   uint32_t enabled = 0;        // SPEC_BAKED (a VkBool32)
   uint32_t materialCount = 1;  // SPEC_BAKED_MATERIAL_COUNT
   std::array<uint32_t, BAKED_WORD_COUNT> words{};
-  bool operator==(const BakedScene& o) const {
-    return enabled == o.enabled && materialCount == o.materialCount && words == o.words;
-  }
+  bool operator==(const BakedScene& o) const { return std::memcmp(this, &o, sizeof(BakedScene)) == 0; }
 };
 
 // The render's side of the key.
@@ -71,14 +67,25 @@ struct KernelKey {
   // FILTER_COVERAGE's edge pass (the RAYTEX_EDGE_PASS variant, an indirect dispatch over the
   // listed edge pixels) rather than its main kernel; set by the renderer (edgePassKey).
   uint32_t edgePass = 0;
-  bool operator==(const KernelKey& o) const {
-    return shape == o.shape && outputMode == o.outputMode && textureFilter == o.textureFilter &&
-           imageFilter == o.imageFilter &&
-           samplesPerSide == o.samplesPerSide && progressive == o.progressive && baked == o.baked &&
-           loopBudget == o.loopBudget && tileOrder == o.tileOrder && passMask == o.passMask &&
-           edgePass == o.edgePass;
-  }
+  // Two keys (and shapes, and baked scenes) are equal when all their words are: they are words
+  // only, with no padding.
+  bool operator==(const KernelKey& o) const { return std::memcmp(this, &o, sizeof(KernelKey)) == 0; }
 };
+static_assert(std::has_unique_object_representations_v<KernelKey>, "a KernelKey is words only, with no padding");
+
+// A specialisation constant of the trace kernel: where its value lies in KernelKey. The pipeline's
+// map entries (pipeline.cpp) are made from these rows, one per SPEC_* of shaders/common.h; the
+// kernel declares each with its constant_id.
+struct SpecConstant {
+  uint32_t id;      // SPEC_*: the first of `words` consecutive ids
+  uint32_t offset;  // its first word's byte offset in KernelKey
+  uint32_t words;   // 1, or BAKED_WORD_COUNT for SPEC_BAKED_WORDS
+  bool (*declared)(const KernelKey& key);  // whether the key's kernel declares it; nullptr: every kernel
+};
+
+// Every constant, in SPEC_* order. The words of KernelKey that are no constant: edgePass (it picks
+// the build variant only).
+const std::vector<SpecConstant>& specConstants();
 
 // The kernel's FILTER_* for a render's filter, and its IMAGE_FILTER_* for an image filter.
 uint32_t kernelFilter(TextureFilter filter);

@@ -1,5 +1,6 @@
 #include "headless.h"
 
+#include "kernel_plan.h"
 #include "scene_limits.h"
 
 #include "gpu_scene.h"
@@ -50,22 +51,8 @@ GpuScene prepareScene(const RenderOptions& options, Scene* scene, HeadlessRender
   return packScene(options, *scene, out);
 }
 
-// Whether samples go one dispatch each: where together they would pass lavapipe's loop limit
-// (kMaxLoopIterations), the progressive kernel adds them one at a time, the same image bit for
-// bit. A sphere tree's walks are not known before they run: its samples always go one at a time.
-// With passes the kernel traces the pixel centre once more. The coverage filter's samples always
-// go one at a time: each one's edge pass follows its main kernel (coverage.glsl).
-bool samplesPerDispatch(const Renderer& renderer, const Scene& scene, const GpuScene& gpuScene, const RenderJob& job) {
-  if (job.samplesPerPixel <= 1) return false;
-  if (renderer.coverage) return true;
-  const uint32_t traces = job.samplesPerPixel + (renderer.passMask != 0 ? 1 : 0);
-  return renderer.device.lavapipe && (gpuScene.shape.sphereTree != SPHERE_TREE_NONE ||
-                                      !withinLoopLimit(scene, traces));
-}
-
-// The kernel built around the scene's values (the camera is fixed), and tile kernels where they
-// pay within this render's samples (tile_kernels.h), or, steady, wherever they save (bench: the
-// frame a long render or the viewer gets).
+// The kernel built around the scene's values (the camera is fixed), and the kernel plan's kernels
+// for this render's samples (kernel_plan.h), or, steady, for the frame a long render gets (bench).
 void preparePipelines(Renderer& renderer, const GpuScene& gpuScene, const RenderJob& job, bool perSample,
                       double samples) {
   KernelOptions kernel;
@@ -74,11 +61,7 @@ void preparePipelines(Renderer& renderer, const GpuScene& gpuScene, const Render
   kernel.samplesPerSide = job.samplesPerSide;
   kernel.progressive = perSample;
   kernel.bakeValues = true;
-  const KernelKey key = kernelKey(gpuScene, kernel);
-  preparePipeline(renderer, key);
-  if (!renderer.device.lavapipe || bandCount(renderer) != 1) return;
-  const TilePlan plan = planTileKernels(gpuScene, {key.shape.sphereKinds, key.shape.planeKinds});
-  if (tileKernelsPay(plan, samples)) prepareTileKernels(renderer, key, plan);
+  prepareFrameKernels(renderer, gpuScene, kernelKey(gpuScene, kernel), samples);
 }
 
 // One band of the image, every sample; its GPU time. Adds the samples the coverage filter's

@@ -5,6 +5,7 @@
 #include "camera_block.h"
 #include "gpu_scene.h"
 #include "image_io.h"
+#include "kernel_plan.h"
 #include "median.h"
 #include "output_file.h"
 #include "overlay.h"
@@ -448,24 +449,10 @@ KernelKey viewerKey(const GpuScene& packed, const Scene& scene, const RenderJob&
   return key;
 }
 
-// The kinds of the viewer's tile kernels for `key` (tile_kernels.h): on lavapipe, where a tile
-// no sphere reaches saves (sphereFreeTilesSave), the planes' kinds alone and all, whatever the
-// camera, so a camera move never needs another kernel. None (the one kernel) elsewhere.
-std::vector<TextureKinds> viewerTileSets(const Renderer& renderer, const KernelKey& key) {
-  const TextureKinds all{key.shape.sphereKinds, key.shape.planeKinds};
-  if (!renderer.device.lavapipe || !sphereFreeTilesSave(all)) return {};
-  return sphereFreeTileKernels(all);
-}
-
 // The kernels of the frames of `scene`.
 std::vector<KernelKey> viewerKernels(const Renderer& renderer, const GpuScene& packed, const Scene& scene,
                                      const RenderJob& job) {
-  const KernelKey key = viewerKey(packed, scene, job);
-  const std::vector<TextureKinds> sets = viewerTileSets(renderer, key);
-  if (sets.empty()) return {key};
-  std::vector<KernelKey> keys;
-  for (const TextureKinds& kinds : sets) keys.push_back(tileKernelKey(key, kinds));
-  return keys;
+  return viewerFrameKernels(renderer, viewerKey(packed, scene, job));
 }
 
 // The kernel with every kind the scene's materials have, on spheres and planes alike: it renders
@@ -504,9 +491,7 @@ bool prepareViewerKernels(Renderer& renderer, const GpuScene& packed, const Scen
       return false;
     }
   }
-  const KernelKey key = viewerKey(packed, scene, job);
-  const std::vector<TextureKinds> sets = viewerTileSets(renderer, key);
-  prepareTileKernels(renderer, key, sets.empty() ? TilePlan{} : assignTiles(sets, tileKinds(packed), packed.tiles.columns));
+  prepareViewerFrameKernels(renderer, packed, viewerKey(packed, scene, job));
   return true;
 }
 

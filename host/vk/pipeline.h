@@ -1,13 +1,10 @@
-// The trace kernel's descriptor layout and its specialised compute pipelines.
+// The trace kernel's specialised compute pipelines (its descriptor set: bindings.h).
 #pragma once
 
 #include "device.h"
 #include "gpu_scene.h"
 
 #include <cstdint>
-
-// Bindings of shaders/common.h (set 0).
-VkDescriptorSetLayout createTraceSetLayout(const Device& device);
 
 VkPipeline createTracePipeline(const Device& device, VkPipelineLayout layout, const KernelKey& key);
 

@@ -1,5 +1,6 @@
 #include "renderer.h"
 
+#include "bindings.h"
 #include "common.h"
 #include "pipeline.h"
 #include "scene_limits.h"
@@ -12,53 +13,6 @@
 #include <vector>
 
 namespace {
-
-void writeDescriptors(Renderer& r) {
-  VkDescriptorImageInfo displayInfo{VK_NULL_HANDLE, r.display.view, VK_IMAGE_LAYOUT_GENERAL};
-  VkDescriptorImageInfo imagesInfo[MAX_IMAGES];
-  for (size_t i = 0; i < MAX_IMAGES; ++i)
-    imagesInfo[i] = {r.sampler, (i < r.images.size() ? r.images[i] : r.placeholder).view,
-                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
-  auto bufferInfo = [](const Buffer& b) { return VkDescriptorBufferInfo{b.buffer, 0, VK_WHOLE_SIZE}; };
-  const VkDescriptorBufferInfo buffers[] = {
-      bufferInfo(r.frame),        bufferInfo(r.spheres), bufferInfo(r.planes),      bufferInfo(r.materials),
-      bufferInfo(r.lights),       bufferInfo(r.noise),   bufferInfo(r.accumulation), bufferInfo(r.pixels),
-      bufferInfo(r.tree),         bufferInfo(r.treeStorage), bufferInfo(r.sphereStorage), bufferInfo(r.status),
-      bufferInfo(r.tileRanges),   bufferInfo(r.tileSpheres), {r.tileOrder.buffer, 0, 4 * TILE_ORDER_CHUNK},
-      bufferInfo(r.passes),       bufferInfo(r.edgeList)};
-  const uint32_t bufferBindings[] = {BINDING_FRAME,  BINDING_SPHERES, BINDING_PLANES,       BINDING_MATERIALS,
-                                     BINDING_LIGHTS, BINDING_NOISE,   BINDING_ACCUMULATION, BINDING_OUTPUT,
-                                     BINDING_TREE,   BINDING_TREE_STORAGE, BINDING_SPHERE_STORAGE, BINDING_STATUS,
-                                     BINDING_TILE_RANGES, BINDING_TILE_SPHERES, BINDING_TILE_ORDER, BINDING_AOV,
-                                     BINDING_EDGE_LIST};
-
-  std::vector<VkWriteDescriptorSet> writes;
-  auto write = [&](uint32_t binding, VkDescriptorType type) {
-    VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-    w.dstSet = r.descriptorSet;
-    w.dstBinding = binding;
-    w.descriptorCount = 1;
-    w.descriptorType = type;
-    writes.push_back(w);
-    return &writes.back();
-  };
-  writes.reserve(std::size(buffers) + 2);  // pointers into it stay valid
-  write(BINDING_DISPLAY, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE)->pImageInfo = &displayInfo;
-  VkWriteDescriptorSet* images = write(BINDING_IMAGES, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER);
-  images->descriptorCount = MAX_IMAGES;
-  images->pImageInfo = imagesInfo;
-  for (size_t i = 0; i < std::size(buffers); ++i) {
-    const uint32_t b = bufferBindings[i];
-    bool uniform = b != BINDING_ACCUMULATION && b != BINDING_OUTPUT && b != BINDING_TREE_STORAGE &&
-                   b != BINDING_SPHERE_STORAGE && b != BINDING_STATUS && b != BINDING_TILE_RANGES &&
-                   b != BINDING_TILE_SPHERES && b != BINDING_AOV && b != BINDING_EDGE_LIST;
-    const VkDescriptorType type = b == BINDING_TILE_ORDER ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC
-                                  : uniform               ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER
-                                                          : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-    write(bufferBindings[i], type)->pBufferInfo = &buffers[i];
-  }
-  vkUpdateDescriptorSets(r.device.device, uint32_t(writes.size()), writes.data(), 0, nullptr);
-}
 
 // Replaces `buffer` with a uniform buffer of the whole block the kernel declares, `capacity`
 // items, the first `count` from `data`.
@@ -115,7 +69,7 @@ void writeTileOrder(Renderer& r, const std::vector<uint32_t>& words) {
   if (r.tileOrder.size < bytes) {
     destroyBuffer(r.device, r.tileOrder);
     r.tileOrder = createBuffer(r.device, bytes, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
-    if (r.descriptorSet) writeDescriptors(r);
+    if (r.descriptorSet) writeTraceDescriptors(r);
   }
   writeBuffer(r.tileOrder, words.data(), 4 * words.size());
   r.tileOrderWords = words;
@@ -385,7 +339,7 @@ void uploadScene(Renderer& r, const GpuScene& s) {
       !edgesFit)
     createOutput(r, s.frame.width, s.frame.height);
   selectBand(r, 0);
-  writeDescriptors(r);
+  writeTraceDescriptors(r);
 }
 
 void updateSceneBuffers(Renderer& r, const GpuScene& s) {
@@ -398,7 +352,7 @@ void updateSceneBuffers(Renderer& r, const GpuScene& s) {
   // The lists change length with the camera: the buffers grow when they must, not per move.
   bool replaced = refillStorageBuffer(r, r.tileRanges, s.tiles.ranges.data(), s.tiles.ranges.size());
   replaced |= refillStorageBuffer(r, r.tileSpheres, s.tiles.spheres.data(), s.tiles.spheres.size());
-  if (replaced) writeDescriptors(r);
+  if (replaced) writeTraceDescriptors(r);
   writeBuffer(r.planes, s.planes.data(), sizeof(gpu::Plane) * s.planes.size());
   writeBuffer(r.lights, s.lights.data(), sizeof(gpu::Light) * s.lights.size());
 }
@@ -635,5 +589,5 @@ const float* passPixels(const Renderer& r, Pass pass) {
 void swapAccumulation(Renderer& r) {
   std::swap(r.accumulation, r.otherAccumulation);
   std::swap(r.display, r.otherDisplay);
-  writeDescriptors(r);
+  writeTraceDescriptors(r);
 }
