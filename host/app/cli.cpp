@@ -1,4 +1,6 @@
 #include "cli.h"
+#include "file_extension.h"
+#include "input.h"
 #include "output_formats.h"
 #include "suggest.h"
 
@@ -225,17 +227,16 @@ const struct {
      "failure."},
 };
 
-const char* const kViewKeys =
-    "view keys:\n"
-    "  1-8        a course material on the sphere: aSolidChecker, aNoise, aMarble, aWood, anImage,\n"
-    "             aTurbulence, aDturbulence, aChecker\n"
-    "  P          the next course material on the plane\n"
-    "  arrows, WASD, left-drag   orbit the camera around its lookat point\n"
-    "  +/-, PageUp/PageDown, scroll   zoom\n"
-    "  R          reset the view to the scene file's camera\n"
-    "  F12        write -o FILE (default out.png) once every sample is in: the PNG raytex render\n"
-    "             writes with the same view, size, --spp and --filter\n"
-    "  Esc, Q     quit\n";
+// The view keys, from the viewer's key table (the list H shows).
+std::string viewKeys() {
+  std::string out = "view keys:\n";
+  for (const KeyHelp& row : keyHelp()) {
+    std::string keys = "  " + std::string(row.keys);
+    keys.resize(std::max<size_t>(keys.size() + 2, 26), ' ');
+    out += keys + row.does + "\n";
+  }
+  return out;
+}
 
 const char* const kExitCodes =
     "exit codes:\n"
@@ -356,11 +357,7 @@ void checkBatch(const CliArgs& cli, const std::vector<std::string>& given) {
 std::string outputFormatName(const RenderOptions& r) {
   if (!r.output.empty() && r.output.back() == '/') return r.format;
   if (r.output == "-") return "png";
-  const size_t dot = r.output.find_last_of('.');
-  if (dot == std::string::npos || r.output.find('/', dot) != std::string::npos) return "";
-  std::string ext = r.output.substr(dot + 1);
-  for (char& ch : ext) ch = char(tolower(static_cast<unsigned char>(ch)));
-  return ext;
+  return fileExtension(r.output);
 }
 
 // render --compare: the comparison's options only with it, and an output file to compare.
@@ -491,7 +488,7 @@ std::string usageText() {
     out += "  " + optionSignature(o) + "\n";
     out += wrapped(std::string(o.help) + " [" + commandList(o.commands) + "]", 6, 100, 6);
   }
-  out += "\n" + std::string(kViewKeys) + "\n" + kExitCodes;
+  out += "\n" + viewKeys() + "\n" + kExitCodes;
   out += "\nRendering untrusted scenes: docs/security.md\nScene format: docs/scene-format.md; texture kinds: ";
   return out + textureKindList() + "\n";
 }

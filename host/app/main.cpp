@@ -4,9 +4,9 @@
 #include "device.h"
 #include "diff_report.h"
 #include "error.h"
-#include "output_file.h"
+#include "atomic_file.h"
 #include "render_command.h"
-#include "render_output.h"
+#include "render_files.h"
 #include "viewer.h"
 
 #include <cstdio>

@@ -3,7 +3,7 @@
 #include "error.h"
 #include "flip.h"
 #include "output_formats.h"
-#include "output_file.h"
+#include "atomic_file.h"
 
 #include <algorithm>
 #include <cctype>

@@ -3,7 +3,7 @@
 #pragma once
 
 #include "output_plan.h"
-#include "float_image.h"
+#include "srgb.h"
 #include "image_metrics.h"
 
 #include <cstdint>

@@ -1,5 +1,7 @@
 #include "flip.h"
 
+#include "srgb.h"
+
 #include "error.h"
 #include "float_memo.h"
 #include "parallel.h"
@@ -126,17 +128,6 @@ class StreamedFilter {
 // Slots a StreamedFilter of radius r needs when rows are pushed `ahead` rows past the one read.
 int filterSlots(int r, int ahead, int h) { return std::min(r + ahead + 1, h); }
 
-std::vector<double> filterPlane(const std::vector<double>& plane, int w, int h, const SeparableKernel& kernel) {
-  const int r = kernel.empty() ? 0 : kernel.front().x.radius;
-  StreamedFilter filter(kernel, ColumnSpan(w, 0, w, r), h, filterSlots(r, r, h));
-  std::vector<double> out(plane.size());
-  int pushed = 0;
-  for (int y = 0; y < h; ++y) {
-    for (; pushed <= std::min(h - 1, y + r); ++pushed) filter.push(pushed, &plane[size_t(pushed) * size_t(w)]);
-    filter.output(y, &out[size_t(y) * size_t(w)]);
-  }
-  return out;
-}
 
 // A Gaussian's 1D samples exp(-pi^2 (i / ppd)^2 / b) at offsets -r..r.
 Kernel1D csfGaussian(double b, int radius, double pixelsPerDegree) {
@@ -314,6 +305,18 @@ int flipBandCount(int height) {
 
 }  // namespace
 
+std::vector<double> filterPlane(const std::vector<double>& plane, int w, int h, const SeparableKernel& kernel) {
+  const int r = kernel.empty() ? 0 : kernel.front().x.radius;
+  StreamedFilter filter(kernel, ColumnSpan(w, 0, w, r), h, filterSlots(r, r, h));
+  std::vector<double> out(plane.size());
+  int pushed = 0;
+  for (int y = 0; y < h; ++y) {
+    for (; pushed <= std::min(h - 1, y + r); ++pushed) filter.push(pushed, &plane[size_t(pushed) * size_t(w)]);
+    filter.output(y, &out[size_t(y) * size_t(w)]);
+  }
+  return out;
+}
+
 glm::dvec3 linearRgbToXyz(const glm::dvec3& rgb) { return rgbToXyzMatrix() * rgb; }
 
 glm::dvec3 xyzToLinearRgb(const glm::dvec3& xyz) {
@@ -406,25 +409,6 @@ KernelTerm featureKernel(FeatureKind kind, double pixelsPerDegree) {
   const double ySum = sumOf(term.y.weights);
   for (double& w : term.y.weights) w /= ySum;
   return term;
-}
-
-std::vector<double> denseKernel(const SeparableKernel& kernel) {
-  const int r = kernel.empty() ? 0 : kernel.front().x.radius;
-  const size_t n = size_t(2 * r + 1);
-  std::vector<double> out(n * n, 0.0);
-  for (const KernelTerm& t : kernel)
-    for (size_t y = 0; y < n; ++y)
-      for (size_t x = 0; x < n; ++x) out[y * n + x] += t.x.weights[x] * t.y.weights[y];
-  return out;
-}
-
-FloatImage filterImage(const FloatImage& image, const SeparableKernel& kernel) {
-  FloatImage out = blankLike(image, image.channels);
-  for (int c = 0; c < image.channels; ++c) {
-    std::vector<double> plane = filterPlane(channelOf(image, c), image.width, image.height, kernel);
-    for (size_t i = 0; i < plane.size(); ++i) out.pixels[i * size_t(image.channels) + size_t(c)] = float(plane[i]);
-  }
-  return out;
 }
 
 FloatImage srgbToYcxcz(const FloatImage& srgb) {

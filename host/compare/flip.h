@@ -12,8 +12,7 @@
 // it. Filters repeat the edge pixels outside the image. No Vulkan.
 #pragma once
 
-#include "float_image.h"
-#include "image_io.h"
+#include "image.h"
 
 #include <glm/vec3.hpp>
 
@@ -79,10 +78,9 @@ int featureRadius(double pixelsPerDegree);
 // sum 1 and its negative weights to sum -1.
 KernelTerm featureKernel(FeatureKind kind, double pixelsPerDegree);
 
-// The kernel's (2r+1) x (2r+1) weights, row by row (dy from -r), for tests.
-std::vector<double> denseKernel(const SeparableKernel& kernel);
-// Filters every channel of `image` with `kernel`, repeating the edge pixels.
-FloatImage filterImage(const FloatImage& image, const SeparableKernel& kernel);
+// A w x h plane (row 0 first) filtered with `kernel`, repeating the edge pixels: what every
+// filter of the stages computes.
+std::vector<double> filterPlane(const std::vector<double>& plane, int w, int h, const SeparableKernel& kernel);
 
 // --- the pipelines ---
 // sRGB values in [0, 1] (the first 3 channels) to YCxCz, 3 channels.

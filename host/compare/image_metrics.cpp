@@ -2,7 +2,8 @@
 
 #include "error.h"
 #include "float_memo.h"
-#include "image_io.h"
+#include "image_file.h"
+#include "srgb.h"
 #include "parallel.h"
 
 #include <algorithm>

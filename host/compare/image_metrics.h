@@ -3,8 +3,7 @@
 // tests compare through them. No Vulkan.
 #pragma once
 
-#include "float_image.h"
-#include "image_read.h"
+#include "image_file.h"
 
 #include <vector>
 

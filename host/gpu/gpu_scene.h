@@ -4,7 +4,7 @@
 
 #include "bvh.h"
 #include "common.h"
-#include "image_io.h"
+#include "mip_chain.h"
 #include "kernel_key.h"
 #include "scene.h"
 #include "scene_images.h"
@@ -16,7 +16,7 @@
 #include <vector>
 
 // One image file's texels as uploaded: RGBA8 sRGB, level 0 (width x height) first, then its
-// levels 1.. of the full mip chain when it has them (mipChain in image_io.h: level l is
+// levels 1.. of the full mip chain when it has them (mipChain in mip_chain.h: level l is
 // max(1, width >> l) x max(1, height >> l)), level after level.
 struct ImageChain {
   int width = 1, height = 1, levels = 1;

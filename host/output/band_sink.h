@@ -1,5 +1,5 @@
 // A band of rows on its way to the output files, and the interface of each file's writer
-// (png_output.h, exr_output.h, pfm_output.h; image_output.h drives them). No Vulkan.
+// (png_writer.h, exr_writer.h, pfm_writer.h; image_writer.h drives them). No Vulkan.
 #pragma once
 
 #include <cstddef>
@@ -27,7 +27,7 @@ struct BandSink {
   // Writes what is left once every row is in; the file stays invisible until commit().
   virtual void complete() = 0;
   virtual void commit() = 0;
-  // Removes the file commit() put in place (output_file.h, OutputFile::withdraw).
+  // Removes the file commit() put in place (atomic_file.h, AtomicFile::withdraw).
   virtual void withdraw() = 0;
   // Colour values written as 0 because they were not finite (PNG; EXR and PFM keep them).
   virtual size_t nonFinite() const { return 0; }

@@ -1,17 +1,19 @@
 #include "output_formats.h"
 
+#include "file_extension.h"
+
 #include "error.h"
-#include "exr_output.h"
-#include "float_input.h"
-#include "image_output.h"
-#include "pfm_output.h"
-#include "png_output.h"
+#include "exr_writer.h"
+#include "image_file.h"
+#include "float_file.h"
+#include "image_writer.h"
+#include "pfm_writer.h"
+#include "png_writer.h"
 
 #include <sys/stat.h>
 
 #include <algorithm>
 #include <cctype>
-#include <filesystem>
 
 namespace {
 
@@ -44,11 +46,6 @@ std::string lower(std::string text) {
   return text;
 }
 
-// The extension of `path` without its dot, in lower case ("" without one).
-std::string extensionWord(const std::string& path) {
-  const std::string ext = std::filesystem::path(path).extension().string();
-  return ext.empty() ? "" : lower(ext.substr(1));
-}
 
 }  // namespace
 
@@ -85,7 +82,7 @@ std::string outputExtensions() {
 }
 
 OutputFormat outputFormatFor(const std::string& path) {
-  if (const OutputFormatInfo* info = findOutputFormat(extensionWord(path))) return info->format;
+  if (const OutputFormatInfo* info = findOutputFormat(fileExtension(path))) return info->format;
   struct stat st;
   if (path == "-" || (stat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode) && !S_ISDIR(st.st_mode)))
     return OutputFormat::Png;  // written through whatever its name
@@ -93,6 +90,6 @@ OutputFormat outputFormatFor(const std::string& path) {
 }
 
 LinearImage readLinearImage(const std::string& path, uint64_t maxBytes) {
-  if (const OutputFormatInfo* info = findOutputFormat(extensionWord(path))) return info->reader(path, maxBytes);
+  if (const OutputFormatInfo* info = findOutputFormat(fileExtension(path))) return info->reader(path, maxBytes);
   return readSrgbImage(path, maxBytes);
 }

@@ -1,12 +1,12 @@
 // The image file formats raytex writes, one row each: the format's word (--format, the file
 // name's extension), its own option, where its passes go, the metadata keys it defines itself,
 // its writer and its reader. The file name's format, --format and its checks, the writers of
-// image_output.h and the readers of `raytex diff` and `render --compare` all read these rows.
+// image_writer.h and the readers of `raytex diff` and `render --compare` all read these rows.
 // Adding a format: its OutputFormat value, its row, its writer (a BandSink: band_sink.h) and
 // its reader. No Vulkan.
 #pragma once
 
-#include "image_read.h"
+#include "image_file.h"
 
 #include <cstdint>
 #include <memory>

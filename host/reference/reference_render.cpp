@@ -7,6 +7,7 @@
 #include "texture_kinds.h"
 
 #include <glm/geometric.hpp>
+#include <glm/vec2.hpp>
 
 #include <algorithm>
 #include <cmath>

@@ -4,13 +4,12 @@
 // Slow by design: the ground truth for tests and accuracy charts.
 #pragma once
 
-#include "image_io.h"
+#include "srgb.h"
 #include "mapping.h"
 #include "reference.h"
 #include "scene.h"
 #include "scene_images.h"
 
-#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include <map>

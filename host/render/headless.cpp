@@ -4,9 +4,9 @@
 #include "scene_limits.h"
 
 #include "gpu_scene.h"
-#include "output_file.h"
+#include "atomic_file.h"
 #include "parser.h"
-#include "render_output.h"
+#include "render_files.h"
 #include "scene_notes.h"
 #include "renderer.h"
 
@@ -88,11 +88,11 @@ double renderBand(Renderer& renderer, uint32_t firstRow, bool perSample, uint32_
 struct RenderOutput {
   const RenderOptions& options;
   std::chrono::steady_clock::time_point start;  // the scene's parse
-  std::unique_ptr<ImageOutput> files;
+  std::unique_ptr<ImageWriter> files;
   glm::dvec3 eye{0.0};  // added to the position pass (world_position.h)
 };
 
-// The selected band's passes in the order of options.passes, as ImageOutput takes them; the
+// The selected band's passes in the order of options.passes, as ImageWriter takes them; the
 // position pass in world coordinates, held in `world`.
 std::vector<const float*> bandPasses(const Renderer& renderer, const RenderOutput& output, std::vector<float>& world) {
   std::vector<const float*> planes;
@@ -114,7 +114,7 @@ void keepBand(Renderer& renderer, HeadlessRender* out, RenderOutput& output) {
     const RenderFacts facts{out->deviceName, std::chrono::duration<double, std::milli>(
                                                  std::chrono::steady_clock::now() - output.start).count()};
     const Metadata metadata = renderMetadata(output.options, out->job, facts);
-    output.files = std::make_unique<ImageOutput>(renderOutputSpec(output.options, out->job, metadata));
+    output.files = std::make_unique<ImageWriter>(renderOutputSpec(output.options, out->job, metadata));
   }
   std::vector<float> world;
   output.files->writeBand(int(renderer.bandFirstRow), int(bandHeight(renderer)), framePixels(renderer),

@@ -4,7 +4,6 @@
 #include "batch.h"
 #include "render_options.h"
 #include "error.h"
-#include "image_io.h"
 
 #include <chrono>
 #include <cstdint>
@@ -37,7 +36,7 @@ struct HeadlessRender {
 };
 
 // Renders options.scene on Vulkan, then `extraFrames` more frames of the same image (timed),
-// and writes its output files (render_output.h; bench without -o: a PNG encoded and dropped, for
+// and writes its output files (render_files.h; bench without -o: a PNG encoded and dropped, for
 // the encode phase). Throws an Error (error.h) on failure,
 // with nothing written. `steady`: tile kernels wherever they save time per frame, not only
 // where they pay for their pipelines in this render.

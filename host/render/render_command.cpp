@@ -2,11 +2,10 @@
 
 #include "error.h"
 #include "headless.h"
-#include "image_io.h"
-#include "output_file.h"
+#include "atomic_file.h"
 #include "parser.h"
 #include "reference_render.h"
-#include "render_output.h"
+#include "render_files.h"
 #include "scene_notes.h"
 
 #include <chrono>
@@ -32,7 +31,7 @@ void runReference(const RenderOptions& options) {
   const double renderMs = lapMs(t);
   std::vector<float> rgba = referenceToRgba(reference);
   const RenderFacts facts{"float64 CPU reference", std::chrono::duration<double, std::milli>(Clock::now() - start).count()};
-  ImageOutput output(renderOutputSpec(options, job, renderMetadata(options, job, facts)));
+  ImageWriter output(renderOutputSpec(options, job, renderMetadata(options, job, facts)));
   output.writeBand(0, int(job.height), rgba.data(), {});
   output.finish();
   printOutputWarnings(output, stderr);

@@ -1,7 +1,8 @@
 #include "scene_images.h"
 
 #include "common.h"
-#include "image_io.h"
+#include "image_file.h"
+#include "mip_chain.h"
 
 #include <algorithm>
 #include <cstdio>

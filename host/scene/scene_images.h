@@ -3,7 +3,7 @@
 // MAX_IMAGES of them (common.h), and their textures on the GPU within a budget. No Vulkan.
 #pragma once
 
-#include "image_load.h"
+#include "image_file.h"
 #include "scene.h"
 
 #include <cstdint>

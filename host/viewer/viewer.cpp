@@ -1,128 +1,30 @@
 #include "viewer.h"
 
-#include "scene_limits.h"
-
-#include "camera_block.h"
-#include "gpu_scene.h"
-#include "image_io.h"
-#include "kernel_plan.h"
-#include "median.h"
-#include "output_file.h"
+#include "input.h"
+#include "kernel_warm_up.h"
 #include "overlay.h"
-#include "parser.h"
-#include "render_output.h"
-#include "scene_notes.h"
-#include "renderer.h"
-#include "selection.h"
+#include "viewer_state.h"
 #include "window.h"
 
+#include "kernel_plan.h"
+#include "median.h"
+#include "parser.h"
+#include "render_files.h"
+#include "renderer.h"
+#include "scene_limits.h"
+#include "scene_notes.h"
+
 #include <GLFW/glfw3.h>
-#include <glm/geometric.hpp>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <optional>
 #include <string>
 #include <vector>
 
 namespace {
-
-// The course's materials, in the order of the notes; keys 1-8 put them on the selection.
-const char* const kCourseMaterials[] = {"aSolidChecker", "aNoise",      "aMarble",      "aWood",
-                                        "anImage",       "aTurbulence", "aDturbulence", "aChecker"};
-constexpr size_t kCourseMaterialCount = sizeof(kCourseMaterials) / sizeof(kCourseMaterials[0]);
-
-// Every key, as H shows them over the image: the key, a tab, what it does.
-const std::vector<std::string> kHelpLines = {
-    "1 - 8\tcourse material on the selection (or every sphere)",
-    "M\tnext material: the scene's own, then the course's",
-    "P\tnext course material on the planes",
-    "Tab\tselect the object under the cursor",
-    "drag, arrows, WASD\torbit",
-    "scroll, + -, PgUp PgDn\tzoom",
-    "R\tthe scene file's camera",
-    "C\tprint the view as the scene file's camera block",
-    "Z (hold)\tmagnifier; uv and texel in the title",
-    "U\tuv pass (red u, green v)",
-    "V\tsplit screen: the render's method | another",
-    "B\tthe split's other method: point, box, coverage",
-    "[ ], right drag\tmove the split",
-    "F12\twrite the image (every sample in)",
-    "H\tthis help",
-    "Esc, Q\tquit",
-};
-
-// How long a message stays in the title.
-constexpr std::chrono::seconds kMessageTime{3};
-
-// The camera orbits its lookat point about the scene's up axis: eye = lookat + radius *
-// (cos(elevation) (cos(azimuth) e1 + sin(azimuth) e2) + sin(elevation) up).
-struct Orbit {
-  Camera home;               // the scene file's camera (R returns to it)
-  glm::dvec3 up{0, 1, 0}, e1{1, 0, 0}, e2{0, 0, 1};
-  double radius = 1.0, azimuth = 0.0, elevation = 0.0;
-};
-
-Orbit orbitOf(const Camera& camera) {
-  Orbit o;
-  o.home = camera;
-  o.up = glm::normalize(camera.up);
-  glm::dvec3 offset = camera.eye - camera.lookat;
-  o.radius = glm::length(offset);
-  glm::dvec3 dir = offset / o.radius;
-  o.elevation = std::asin(std::clamp(glm::dot(dir, o.up), -1.0, 1.0));
-  glm::dvec3 flat = dir - o.up * glm::dot(dir, o.up);
-  // The parser rejects an up parallel to the view; fall back to any perpendicular axis.
-  o.e1 = glm::length(flat) > 1e-9 ? glm::normalize(flat) : glm::normalize(glm::cross(o.up, glm::dvec3(1, 0, 0)));
-  o.e2 = glm::cross(o.up, o.e1);
-  return o;
-}
-
-using Clock = std::chrono::steady_clock;
-
-// The scene on screen before a reload, kept until the reloaded scene has rendered a sample:
-// a reloaded scene the kernel fails (LoopBudgetError: a sphere tree's walks, known only as they
-// run) gives way to it. `packed`: its GPU data, set once the reloaded scene replaces it on the
-// device, packed with mip chains or not.
-struct LastGoodScene {
-  Scene scene;
-  Orbit orbit;
-  Selection selection;
-  std::optional<GpuScene> packed;
-  bool mipmaps = false;
-};
-
-struct ViewerState {
-  Scene scene;
-  Orbit orbit;
-  bool dirty = true;         // the GPU scene must be rebuilt (size or scene file changed)
-  bool cameraMoved = false;  // the camera or an object's material changed: re-pack the objects
-  bool dragging = false;
-  double lastX = 0.0, lastY = 0.0;
-  double cursorX = 0.0, cursorY = 0.0;  // in the image's pixels
-  bool screenshot = false;   // write the image to the output PNG once it has every sample
-  bool refresh = false;      // the window needs the image again (exposed, an overlay changed)
-  int planeMaterial = -1;    // index into kCourseMaterials for P cycling
-  Selection selection;       // Tab: what 1-8 and M change (nothing: every sphere)
-  bool help = false;         // H: the keys over the image
-  bool magnifier = false;    // Z held: the pixels around the cursor enlarged
-  bool uvPass = false;       // U: the uv pass instead of the image
-  TextureFilter filter = TextureFilter::Point;       // the render's method (the job's), left of the split
-  bool split = false;                                // V: another method right of the split
-  TextureFilter splitFilter = TextureFilter::Box;    // B: that method
-  double splitAt = 0.5;                              // the split's column, a fraction of the width
-  bool splitDragging = false;                        // the right mouse button moves the split
-  bool sceneError = false;   // the scene's files on disk do not load; the last good scene shows
-  bool specialisedPending = false;  // the all-kinds kernel renders until the specialised ones are compiled
-  std::string message;       // shown in the title for kMessageTime (e.g. "wrote shot.png")
-  Clock::time_point messageAt;
-  std::optional<Clock::time_point> switchedAt;  // a material key, until its frame is shown
-  std::optional<GpuScene> reloaded;  // a reloaded scene's GPU data, its images checked and decoded
-  std::optional<LastGoodScene> lastGood;  // until a reloaded scene has rendered a sample
-};
 
 // How the viewer packs a scene, and what a reloaded scene's images must pass before it replaces
 // the scene on screen.
@@ -132,205 +34,6 @@ struct ImageLimits {
   bool lavapipe = false;  // its driver's loop limit applies (scene_limits.h)
   uint32_t traces = 1;    // checkLoopLimit's: loopTraces
 };
-
-int materialIndex(const Scene& scene, const char* name) {
-  for (size_t i = 0; i < scene.materials.size(); ++i)
-    if (scene.materials[i].name == name) return int(i);
-  return -1;
-}
-
-std::string materialName(const Scene& scene, int index) {
-  return index < 0 ? std::string("default") : scene.materials[size_t(index)].name;
-}
-
-// Moves the camera by angles (radians) and a zoom factor, elevation kept off the poles.
-void moveCamera(ViewerState& state, double dAzimuth, double dElevation, double zoom) {
-  Orbit& o = state.orbit;
-  o.azimuth += dAzimuth;
-  o.elevation = std::clamp(o.elevation + dElevation, -1.55, 1.55);
-  o.radius = std::clamp(o.radius * zoom, 1e-3, 1e7);
-  glm::dvec3 dir = std::cos(o.elevation) * (std::cos(o.azimuth) * o.e1 + std::sin(o.azimuth) * o.e2) +
-                   std::sin(o.elevation) * o.up;
-  state.scene.camera.eye = state.scene.camera.lookat + o.radius * dir;
-  state.scene.camera = printedCamera(state.scene.camera);  // what C prints is exactly this view
-  state.cameraMoved = true;
-}
-
-// A message in the title for kMessageTime.
-void say(ViewerState& state, std::string message) {
-  state.message = std::move(message);
-  state.messageAt = Clock::now();
-}
-
-// The cursor's position in the image's pixels (the framebuffer's, which may differ from the
-// window's coordinates), and the image's size.
-void cursorPixel(GLFWwindow* window, double x, double y, ViewerState& state) {
-  int windowW = 0, windowH = 0, pixelsW = 0, pixelsH = 0;
-  glfwGetWindowSize(window, &windowW, &windowH);
-  glfwGetFramebufferSize(window, &pixelsW, &pixelsH);
-  state.cursorX = windowW > 0 ? x * pixelsW / windowW : x;
-  state.cursorY = windowH > 0 ? y * pixelsH / windowH : y;
-}
-
-// V's split at the cursor's column.
-void moveSplit(GLFWwindow* window, ViewerState& state) {
-  int width = 0, height = 0;
-  glfwGetFramebufferSize(window, &width, &height);
-  state.splitAt = std::clamp(state.cursorX / std::max(width, 1), 0.0, 1.0);
-  state.refresh = true;
-}
-
-void onMouseButton(GLFWwindow* window, int button, int action, int) {
-  auto* state = static_cast<ViewerState*>(glfwGetWindowUserPointer(window));
-  if (button == GLFW_MOUSE_BUTTON_RIGHT) {
-    state->splitDragging = action == GLFW_PRESS && state->split;
-    if (state->splitDragging) moveSplit(window, *state);
-    return;
-  }
-  if (button != GLFW_MOUSE_BUTTON_LEFT) return;
-  state->dragging = action == GLFW_PRESS;
-  glfwGetCursorPos(window, &state->lastX, &state->lastY);
-}
-
-void onCursor(GLFWwindow* window, double x, double y) {
-  auto* state = static_cast<ViewerState*>(glfwGetWindowUserPointer(window));
-  if (state->dragging) moveCamera(*state, -(x - state->lastX) * 0.01, (y - state->lastY) * 0.01, 1.0);
-  state->lastX = x;
-  state->lastY = y;
-  cursorPixel(window, x, y, *state);
-  if (state->magnifier) state->refresh = true;
-  if (state->splitDragging) moveSplit(window, *state);
-}
-
-void onScroll(GLFWwindow* window, double, double yOffset) {
-  moveCamera(*static_cast<ViewerState*>(glfwGetWindowUserPointer(window)), 0.0, 0.0, std::pow(0.9, yOffset));
-}
-
-// The camera keys, which repeat while held; false for any other key.
-bool onCameraKey(ViewerState& state, int key) {
-  const double step = 5.0 * 3.14159265358979 / 180.0;
-  if (key == GLFW_KEY_LEFT || key == GLFW_KEY_A) {
-    moveCamera(state, -step, 0.0, 1.0);
-  } else if (key == GLFW_KEY_RIGHT || key == GLFW_KEY_D) {
-    moveCamera(state, step, 0.0, 1.0);
-  } else if (key == GLFW_KEY_UP || key == GLFW_KEY_W) {
-    moveCamera(state, 0.0, step, 1.0);
-  } else if (key == GLFW_KEY_DOWN || key == GLFW_KEY_S) {
-    moveCamera(state, 0.0, -step, 1.0);
-  } else if (key == GLFW_KEY_EQUAL || key == GLFW_KEY_KP_ADD || key == GLFW_KEY_PAGE_UP) {
-    moveCamera(state, 0.0, 0.0, 0.9);
-  } else if (key == GLFW_KEY_MINUS || key == GLFW_KEY_KP_SUBTRACT || key == GLFW_KEY_PAGE_DOWN) {
-    moveCamera(state, 0.0, 0.0, 1.0 / 0.9);
-  } else if (key == GLFW_KEY_R) {
-    state.scene.camera = state.orbit.home;
-    state.orbit = orbitOf(state.orbit.home);
-    state.cameraMoved = true;
-  } else {
-    return false;
-  }
-  return true;
-}
-
-// Material `index` on the selection (or every sphere), shown on the next frame.
-void switchMaterial(ViewerState& state, int index) {
-  applyMaterial(state.scene, state.selection, index);
-  state.cameraMoved = true;
-  state.switchedAt = Clock::now();
-}
-
-// P: the next course material the scene defines, on every plane.
-void nextPlaneMaterial(ViewerState& state) {
-  for (size_t step = 1; step <= kCourseMaterialCount; ++step) {
-    const int next = int((state.planeMaterial + step + kCourseMaterialCount) % kCourseMaterialCount);
-    const int index = materialIndex(state.scene, kCourseMaterials[next]);
-    if (index < 0) continue;
-    state.planeMaterial = next;
-    for (Plane& p : state.scene.planes) p.material = index;
-    state.cameraMoved = true;
-    state.switchedAt = Clock::now();
-    return;
-  }
-}
-
-// Tab, 1-8, M and P; false for any other key.
-bool onMaterialKey(GLFWwindow* window, ViewerState& state, int key) {
-  if (key == GLFW_KEY_TAB) {
-    int width = 0, height = 0;
-    glfwGetFramebufferSize(window, &width, &height);
-    state.selection = objectAt(state.scene, std::max(width, 1), std::max(height, 1), state.cursorX, state.cursorY);
-    say(state, state.selection.kind ? "selected " + selectionName(state.scene, state.selection) : "nothing selected");
-  } else if (key >= GLFW_KEY_1 && key <= GLFW_KEY_8) {
-    const char* name = kCourseMaterials[key - GLFW_KEY_1];
-    const int index = materialIndex(state.scene, name);
-    if (index < 0) say(state, std::string(name) + " is not defined by this scene");
-    else switchMaterial(state, index);
-  } else if (key == GLFW_KEY_M) {
-    const int next = nextMaterial(state.scene, selectedMaterial(state.scene, state.selection), kCourseMaterials,
-                                  kCourseMaterialCount);
-    if (next < 0) say(state, "the scene defines no material");
-    else switchMaterial(state, next);
-  } else if (key == GLFW_KEY_P) {
-    nextPlaneMaterial(state);
-  } else {
-    return false;
-  }
-  return true;
-}
-
-// The method after `filter` that is not `except`: point, box, coverage, cycling.
-TextureFilter nextFilter(TextureFilter filter, TextureFilter except) {
-  do filter = TextureFilter((int(filter) + 1) % 3);
-  while (filter == except);
-  return filter;
-}
-
-// V, B, [ and ]: the split screen.
-bool onSplitKey(ViewerState& state, int key) {
-  if (key == GLFW_KEY_V) {
-    state.split = !state.split;
-  } else if (key == GLFW_KEY_B && state.split) {
-    state.splitFilter = nextFilter(state.splitFilter, state.filter);
-  } else if ((key == GLFW_KEY_LEFT_BRACKET || key == GLFW_KEY_RIGHT_BRACKET) && state.split) {
-    state.splitAt = std::clamp(state.splitAt + (key == GLFW_KEY_LEFT_BRACKET ? -1.0 : 1.0) / 32.0, 0.0, 1.0);
-    state.refresh = true;
-    return true;
-  } else {
-    return false;
-  }
-  state.cameraMoved = true;  // both methods start again
-  return true;
-}
-
-// H, U, C and F12.
-void onViewKey(ViewerState& state, int key) {
-  if (key == GLFW_KEY_H) {
-    state.help = !state.help;
-    state.refresh = true;
-  } else if (key == GLFW_KEY_U) {
-    state.uvPass = !state.uvPass;
-    state.refresh = true;
-  } else if (key == GLFW_KEY_C) {
-    printf("%s", cameraBlock(state.scene.camera).c_str());
-    fflush(stdout);
-    say(state, "camera printed to the terminal");
-  } else if (key == GLFW_KEY_F12) {
-    state.screenshot = true;
-  }
-}
-
-void onKey(GLFWwindow* window, int key, int, int action, int) {
-  auto* state = static_cast<ViewerState*>(glfwGetWindowUserPointer(window));
-  if (key == GLFW_KEY_Z) {  // held: the magnifier shows until the key is released
-    state->magnifier = action != GLFW_RELEASE;
-    state->refresh = true;
-    return;
-  }
-  if (action == GLFW_RELEASE || onCameraKey(*state, key) || action != GLFW_PRESS) return;  // the rest do not repeat
-  if (key == GLFW_KEY_ESCAPE || key == GLFW_KEY_Q)
-    glfwSetWindowShouldClose(window, GLFW_TRUE);
-  else if (!onMaterialKey(window, *state, key) && !onSplitKey(*state, key))
-    onViewKey(*state, key);
-}
 
 // Modification times of the scene's files (an unreadable file counts as changed).
 std::vector<std::filesystem::file_time_type> fileTimes(const Scene& scene) {
@@ -395,7 +98,7 @@ void saveScreenshot(ViewerState& state, Renderer& renderer, const RenderOptions&
   if (error.empty()) {
     readbackFrame(renderer);
     try {
-      ImageOutput file(renderOutputSpec(options, job, renderMetadata(options, job, {})));
+      ImageWriter file(renderOutputSpec(options, job, renderMetadata(options, job, {})));
       file.writeBand(0, int(renderer.height), framePixels(renderer), {});
       file.finish();
     } catch (const Error& e) {
@@ -432,91 +135,6 @@ std::string title(const ViewerState& state, uint32_t samples, uint32_t target, d
   if (!state.message.empty() && Clock::now() - state.messageAt < kMessageTime) t += " | " + state.message;
   if (state.sceneError) t += " | scene error, see the terminal";
   return t;
-}
-
-// The pipeline that renders `scene` (its objects' materials as switched) progressively with the
-// job's settings. Every material is packed, so an object's image may be any of the packed
-// scene's elements of BINDING_IMAGES.
-KernelKey viewerKey(const GpuScene& packed, const Scene& scene, const RenderJob& job) {
-  KernelOptions options;
-  options.textureFilter = kernelFilter(job.filter);
-  options.imageFilter = kernelImageFilter(job.imageFilter);
-  options.samplesPerSide = job.samplesPerSide;
-  options.progressive = true;
-  KernelKey key = kernelKey(packed, options);
-  key.shape = sceneShape(scene);
-  if (key.shape.imageCount > 0) key.shape.imageCount = uint32_t(packed.images.size());
-  return key;
-}
-
-// The kernels of the frames of `scene`.
-std::vector<KernelKey> viewerKernels(const Renderer& renderer, const GpuScene& packed, const Scene& scene,
-                                     const RenderJob& job) {
-  return viewerFrameKernels(renderer, viewerKey(packed, scene, job));
-}
-
-// The kernel with every kind the scene's materials have, on spheres and planes alike: it renders
-// any switch of materials, the image bit for bit the specialised kernels' (specialisation_test).
-KernelKey allKindsKey(const GpuScene& packed, const Scene& scene, const RenderJob& job) {
-  KernelKey key = viewerKey(packed, scene, job);
-  uint32_t kinds = 1u << uint32_t(TextureKind::None);  // objects may keep the default material
-  for (const Material& m : scene.materials) kinds |= 1u << uint32_t(m.texture.kind);
-  key.shape.sphereKinds = key.shape.planeKinds = kinds;
-  key.shape.imageCount = uint32_t(packed.images.size());
-  return key;
-}
-
-// The first of the current scene's specialised kernels (viewerKernels) not compiled yet; false
-// when all are.
-bool pendingKernel(const Renderer& renderer, const GpuScene& packed, const Scene& scene, const RenderJob& job,
-                   KernelKey* key) {
-  for (const KernelKey& k : viewerKernels(renderer, packed, scene, job))
-    if (!pipelineWarm(renderer, k)) {
-      *key = k;
-      return true;
-    }
-  return false;
-}
-
-// Makes viewerKernels' kernels current, over their tiles for the camera as packed: after every
-// pack, the only times the key or the tiles change. While one of them has not run yet (lavapipe
-// compiles at the first dispatch) and the all-kinds kernel has, that one renders instead, so
-// that no key waits for a compile; returns false then (waitForWork compiles the others).
-bool prepareViewerKernels(Renderer& renderer, const GpuScene& packed, const Scene& scene, const RenderJob& job) {
-  KernelKey pending;
-  if (pendingKernel(renderer, packed, scene, job, &pending)) {
-    const KernelKey all = allKindsKey(packed, scene, job);
-    if (pipelineWarm(renderer, all)) {
-      preparePipeline(renderer, all);
-      return false;
-    }
-  }
-  prepareViewerFrameKernels(renderer, packed, viewerKey(packed, scene, job));
-  return true;
-}
-
-// A pipeline a key could need next that has not run yet: the all-kinds kernel, then the course
-// materials on the spheres, then on the planes. False when all are ready.
-bool nextPipelineToWarm(const ViewerState& state, const Renderer& renderer, const RenderJob& job,
-                        const GpuScene& packed, KernelKey* key) {
-  *key = allKindsKey(packed, state.scene, job);
-  if (!pipelineWarm(renderer, *key)) return true;
-  for (int onPlane = 0; onPlane < 2; ++onPlane)
-    for (const char* name : kCourseMaterials) {
-      int index = materialIndex(state.scene, name);
-      if (index < 0) continue;
-      Scene switched = state.scene;
-      if (onPlane)
-        for (Plane& p : switched.planes) p.material = index;
-      else
-        for (Sphere& s : switched.spheres) s.material = index;
-      for (const KernelKey& k : viewerKernels(renderer, packed, switched, job))
-        if (!pipelineWarm(renderer, k)) {
-          *key = k;
-          return true;
-        }
-    }
-  return false;
 }
 
 double msBetween(Clock::time_point from, Clock::time_point to) {
@@ -578,14 +196,7 @@ void loadScene(Viewer& v, const RenderOptions& options) {
 void openViewer(Viewer& v, const RenderOptions& options) {
   v.window.window = openWindow(int(v.job.width), int(v.job.height), "raytex");
   GLFWwindow* w = v.window.window;
-  glfwSetWindowUserPointer(w, &v.state);
-  glfwSetKeyCallback(w, onKey);
-  glfwSetMouseButtonCallback(w, onMouseButton);
-  glfwSetCursorPosCallback(w, onCursor);
-  glfwSetScrollCallback(w, onScroll);
-  glfwSetWindowRefreshCallback(w, [](GLFWwindow* window) {
-    static_cast<ViewerState*>(glfwGetWindowUserPointer(window))->refresh = true;
-  });
+  installInput(w, &v.state);
   DeviceOptions device;
   device.deviceIndex = options.device;
   device.validation = options.validate;
@@ -618,7 +229,7 @@ void waitForWork(Viewer& v, bool keepRendering) {
     glfwPollEvents();
   } else if (s.specialisedPending) {
     s.specialisedPending = !prepareViewerKernels(v.renderer, v.gpuScene, s.scene, v.job);
-  } else if (nextPipelineToWarm(s, v.renderer, v.job, v.gpuScene, &warm)) {
+  } else if (nextPipelineToWarm(s.scene, v.renderer, v.job, v.gpuScene, &warm)) {
     warmPipeline(v.renderer, warm);
     glfwPollEvents();
   } else {
@@ -770,7 +381,7 @@ bool showImage(Viewer& v) {
     if (s.split) drawSplit(image, static_cast<const uint32_t*>(v.splitPixels.data), int(std::lround(s.splitAt * w)));
     if (s.uvPass && v.uv.size() == size_t(w) * h * 4) drawUvPass(image, v.uv.data());
     if (s.magnifier) drawMagnifier(image, int(s.cursorX), int(s.cursorY));
-    if (s.help) drawTextBox(image, kHelpLines);
+    if (s.help) drawTextBox(image, keyHelpLines());
   });
 }
 

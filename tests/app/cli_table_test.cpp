@@ -7,7 +7,6 @@
 
 #include <cstdlib>
 #include <fstream>
-#include <sstream>
 #include <string>
 
 namespace {
@@ -15,13 +14,6 @@ namespace {
 const std::string kCliDoc = kSourceDir + "/docs/cli.md";
 const std::string kBegin = "<!-- option table: begin -->\n";
 const std::string kEnd = "<!-- option table: end -->\n";
-
-std::string readWhole(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 // The Usage error's message of parsing `args`, or "" when they parse.
 std::string refusal(const std::vector<std::string>& args) {
@@ -36,7 +28,7 @@ std::string refusal(const std::vector<std::string>& args) {
 }  // namespace
 
 TEST(CliTable, TheReferenceInDocsIsTheTable) {
-  std::string doc = readWhole(kCliDoc);
+  std::string doc = readFile(kCliDoc);
   size_t begin = doc.find(kBegin), end = doc.find(kEnd);
   ASSERT_NE(begin, std::string::npos) << kCliDoc << " lacks " << kBegin;
   ASSERT_NE(end, std::string::npos) << kCliDoc << " lacks " << kEnd;

@@ -2,7 +2,7 @@
 // independently, published CIE L*a*b* values of the sRGB primaries, and the reference
 // implementation's error maps of three image pairs (tests/golden/flip/README.md).
 #include "flip.h"
-#include "image_load.h"
+#include "image_file.h"
 #include "support/files.h"
 
 #include <gtest/gtest.h>
@@ -14,6 +14,31 @@
 #include <string>
 
 namespace {
+
+// The kernel's (2r+1) x (2r+1) weights, row by row (dy from -r).
+std::vector<double> denseKernel(const SeparableKernel& kernel) {
+  const int r = kernel.empty() ? 0 : kernel.front().x.radius;
+  const size_t n = size_t(2 * r + 1);
+  std::vector<double> out(n * n, 0.0);
+  for (const KernelTerm& t : kernel)
+    for (size_t y = 0; y < n; ++y)
+      for (size_t x = 0; x < n; ++x) out[y * n + x] += t.x.weights[x] * t.y.weights[y];
+  return out;
+}
+
+// Every channel of `image` through filterPlane.
+FloatImage filterImage(const FloatImage& image, const SeparableKernel& kernel) {
+  FloatImage out = image;
+  const size_t n = size_t(image.width) * size_t(image.height), channels = size_t(image.channels);
+  for (size_t c = 0; c < channels; ++c) {
+    std::vector<double> plane(n);
+    for (size_t i = 0; i < n; ++i) plane[i] = image.pixels[i * channels + c];
+    plane = filterPlane(plane, image.width, image.height, kernel);
+    for (size_t i = 0; i < n; ++i) out.pixels[i * channels + c] = float(plane[i]);
+  }
+  return out;
+}
+
 
 const double kPi = 3.14159265358979323846;
 

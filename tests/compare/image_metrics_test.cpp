@@ -1,13 +1,14 @@
-// Image measures (host/compare/image_metrics.h) and the linear image reader (host/image/image_read.h): RMSE
+// Image measures (host/compare/image_metrics.h) and the linear image reader (host/image/image_file.h): RMSE
 // and PSNR against values worked by hand, SSIM against a plain double computation written
 // here and against scikit-image's values, the threshold share on a constructed pair, and the
 // clamping of low-dynamic-range inputs.
 #include "cli.h"
 #include "float_memo.h"
-#include "image_io.h"
+#include "image_file.h"
+#include "srgb.h"
 #include "image_metrics.h"
 #include "output_formats.h"
-#include "output_file.h"
+#include "atomic_file.h"
 #include "support/files.h"
 
 #include <gtest/gtest.h>

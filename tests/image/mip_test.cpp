@@ -1,8 +1,9 @@
-// Mip chains of image textures (host/image/image_io.h, mipChain): sizes, linear-light averaging,
+// Mip chains of image textures (host/image/mip_chain.h, mipChain): sizes, linear-light averaging,
 // the 1x1 last level, and their packing for the GPU (buildGpuScene). No Vulkan device.
 #include "gpu_scene.h"
-#include "image_io.h"
-#include "image_load.h"
+#include "image_file.h"
+#include "mip_chain.h"
+#include "srgb.h"
 #include "parser.h"
 #include "support/files.h"
 

@@ -2,8 +2,10 @@
 // chains at the footprint's level, against the float64 reference (bilinear level 0,
 // supersampled: the box-filtered truth). Rendered on a Vulkan device (lavapipe in CI) with
 // validation on; every image is checked for NaN/inf.
-#include "image_load.h"
-#include "output_file.h"
+#include "image_file.h"
+#include "mip_chain.h"
+#include "srgb.h"
+#include "atomic_file.h"
 #include "parser.h"
 #include "reference.h"
 #include "reference_render.h"

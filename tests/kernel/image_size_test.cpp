@@ -2,8 +2,8 @@
 // `wrap = clamp`, rendered on a Vulkan device (lavapipe in CI) with validation on, against the
 // float64 reference.
 #include "support/gpu_fixture.h"
-#include "image_io.h"
-#include "output_file.h"
+#include "image.h"
+#include "atomic_file.h"
 #include "parser.h"
 #include "reference.h"
 #include "reference_render.h"

@@ -2,7 +2,7 @@
 // placement"), on a Vulkan device (lavapipe in CI) with validation on, against the float64
 // oracle (host/reference/mapping.cpp, reference*.cpp) and against the orientation rule itself.
 #include "support/gpu_fixture.h"
-#include "output_file.h"
+#include "atomic_file.h"
 #include "parser.h"
 #include "reference.h"
 #include "reference_render.h"

@@ -3,7 +3,8 @@
 #include "output_formats.h"
 
 #include "error.h"
-#include "image_io.h"
+#include "image_file.h"
+#include "srgb.h"
 #include "support/band_images.h"
 #include "support/files.h"
 

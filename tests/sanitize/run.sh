@@ -8,7 +8,7 @@
 # hundred times to check exit codes and messages; the code it reaches (parsing, errors, output
 # files, renders) runs here through the unit, render, malformed and output tests. The benchmarks
 # are not built. The unit tests run as four processes, not one each (tests/CMakeLists.txt).
-# Timings: docs/architecture.md, "Tests".
+# Timings: docs/architecture.md, "Functions and tests".
 # Usage: tests/sanitize/run.sh [BUILD_DIR]   (default build-sanitize)
 set -euo pipefail
 cd "$(dirname "$0")/../.."

@@ -23,7 +23,7 @@ BandImage bandImage(int width, int height, const std::vector<Pass>& passes) {
   return image;
 }
 
-void writeBands(ImageOutput& output, const BandImage& image, int rows, BandOrder order) {
+void writeBands(ImageWriter& output, const BandImage& image, int rows, BandOrder order) {
   std::vector<int> starts;
   const int step = order == BandOrder::OneBand ? image.height : rows;
   for (int y = 0; y < image.height; y += step) starts.push_back(y);
@@ -51,7 +51,7 @@ OutputSpec bandSpec(const std::string& path, OutputFormat format, const BandImag
 }
 
 size_t writeBandImage(const OutputSpec& spec, const BandImage& image, int rows, BandOrder order) {
-  ImageOutput output(spec);
+  ImageWriter output(spec);
   writeBands(output, image, rows, order);
   output.finish();
   return output.nonFinite();

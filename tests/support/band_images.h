@@ -1,8 +1,8 @@
-// Test images for the output writers (image_output.h): a colour and passes as the renderer
+// Test images for the output writers (image_writer.h): a colour and passes as the renderer
 // hands them over (vec4s, rows top first), written band by band in a chosen order.
 #pragma once
 
-#include "image_output.h"
+#include "image_writer.h"
 
 #include <string>
 #include <vector>
@@ -21,11 +21,11 @@ BandImage bandImage(int width, int height, const std::vector<Pass>& passes);
 enum class BandOrder { OneBand, TopFirst, BottomFirst, Shuffled };
 
 // Writes `image` to `output` in bands of `rows` rows (the last one shorter), in `order`.
-void writeBands(ImageOutput& output, const BandImage& image, int rows, BandOrder order);
+void writeBands(ImageWriter& output, const BandImage& image, int rows, BandOrder order);
 
 // An OutputSpec for `image` at `path`.
 OutputSpec bandSpec(const std::string& path, OutputFormat format, const BandImage& image,
                     const std::vector<Pass>& passes);
 
-// Opens, writes in bands and finishes; returns ImageOutput::nonFinite().
+// Opens, writes in bands and finishes; returns ImageWriter::nonFinite().
 size_t writeBandImage(const OutputSpec& spec, const BandImage& image, int rows, BandOrder order);

@@ -2,8 +2,7 @@
 // differences, a picture of them, resampling; and a frame as a 3-channel float image.
 #pragma once
 
-#include "float_image.h"
-#include "image_io.h"
+#include "image.h"
 
 #include <cstdint>
 

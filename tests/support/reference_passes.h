@@ -2,7 +2,7 @@
 // pixel centre, for the pass tests (aov_test.cpp).
 #pragma once
 
-#include "image_io.h"
+#include "image.h"
 #include "reference.h"
 #include "scene.h"
 

@@ -1,8 +1,10 @@
 // The viewer's pieces that need no window or device: what Tab selects and what 1-8 and M put on
 // it (host/viewer/selection.cpp), the magnifier's readout, the camera block C prints
-// (host/viewer/camera_block.cpp), and the overlays drawn over the window's pixels (host/viewer/overlay.cpp).
+// (host/viewer/camera_block.cpp), the overlays drawn over the window's pixels (host/viewer/overlay.cpp)
+// and the key table (host/viewer/input.cpp) against docs/viewer.md.
 #include "camera_block.h"
 #include "common.h"
+#include "input.h"
 #include "overlay.h"
 #include "parser.h"
 #include "selection.h"
@@ -177,4 +179,22 @@ TEST(Overlay, HelpTooWideForTheWindowWrapsItsDescriptions) {
   const int wide = lowestWhiteRow(1000), narrow = lowestWhiteRow(150);
   EXPECT_GT(wide, 0);
   EXPECT_GT(narrow, wide + 24);  // at least two more lines of 12 pixels
+}
+
+// docs/viewer.md's key table lists the rows of the viewer's key table (host/viewer/input.cpp),
+// in its order; H draws one line a row, the keys and what they do apart.
+TEST(Input, TheDocsListTheKeyTable) {
+  const std::string doc = readFile(kSourceDir + "/docs/viewer.md");
+  const size_t begin = doc.find("| key | action |\n|---|---|\n");
+  ASSERT_NE(begin, std::string::npos) << "docs/viewer.md lacks its key table";
+  std::vector<std::string> documented;
+  for (size_t at = doc.find('\n', doc.find('\n', begin) + 1) + 1; at < doc.size() && doc[at] == '|';
+       at = doc.find('\n', at) + 1)
+    documented.push_back(doc.substr(at + 2, doc.find(" |", at + 1) - at - 2));
+  std::vector<std::string> rows;
+  for (const KeyHelp& row : keyHelp()) rows.push_back(row.keys);
+  EXPECT_EQ(documented, rows);
+  const std::vector<std::string> lines = keyHelpLines();
+  ASSERT_EQ(lines.size(), rows.size());
+  for (size_t i = 0; i < lines.size(); ++i) EXPECT_EQ(lines[i].substr(0, lines[i].find('\t')), rows[i]);
 }

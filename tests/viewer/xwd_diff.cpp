@@ -3,8 +3,7 @@
 // Usage: raytex_xwd_diff WINDOW.xwd IMAGE.png MAX_DIFFERENCE
 // Prints the largest channel difference; exits 0 if it is at most MAX_DIFFERENCE, 1 if not,
 // 2 if a file cannot be read or the sizes differ.
-#include "image_io.h"
-#include "image_load.h"
+#include "image_file.h"
 
 #include <algorithm>
 #include <cstdint>

@@ -1,12 +1,12 @@
 // Float image files read whole, linear, for comparison (`raytex diff`, through readLinearImage,
-// host/output/output_formats.h): EXR (OpenEXR) and PFM. Each is checked as image_load.h checks
+// host/output/output_formats.h): EXR (OpenEXR) and PFM. Each is checked as image_file.h checks
 // PNG and JPEG, before any pixel is allocated: a regular file, the format's magic number, a size
 // of 1 to kMaxImageFileSide a side, width x height x 12 bytes within the caller's budget; then
 // data that is all there and decodes. Values that are not finite are kept (the caller decides).
 // No Vulkan.
 #pragma once
 
-#include "float_image.h"
+#include "image.h"
 
 #include <cstdint>
 #include <string>

@@ -1,6 +1,6 @@
-// writeFileAtomic and outputClash (host/output/output_file.h) on real files, device nodes and FIFOs in
+// writeFileAtomic and outputClash (host/output/atomic_file.h) on real files, device nodes and FIFOs in
 // a temporary directory. Device nodes need root (mknod); those tests skip without it.
-#include "output_file.h"
+#include "atomic_file.h"
 #include "parser.h"
 #include "support/files.h"
 
@@ -46,7 +46,7 @@ std::string writeError(const fs::path& path, const std::vector<uint8_t>& bytes) 
   if (mknod((path).c_str(), S_IFCHR | 0666, makedev(1, (minor))) != 0)                      \
   GTEST_SKIP() << "cannot mknod " << (path) << " (" << strerror(errno) << "): not root?"
 
-TEST(OutputFile, WritesThroughToANullDeviceAndKeepsIt) {
+TEST(AtomicFile, WritesThroughToANullDeviceAndKeepsIt) {
   fs::path dir = freshTempDir("output_file_null");
   fs::path null = dir / "null";
   MAKE_CHAR_DEVICE(null, 3);
@@ -55,7 +55,7 @@ TEST(OutputFile, WritesThroughToANullDeviceAndKeepsIt) {
   EXPECT_EQ(entryCount(dir), 1u);  // no temporary file, no PNG beside it
 }
 
-TEST(OutputFile, AFullDeviceIsAWriteErrorAndStaysADevice) {
+TEST(AtomicFile, AFullDeviceIsAWriteErrorAndStaysADevice) {
   fs::path dir = freshTempDir("output_file_full");
   fs::path full = dir / "full";
   MAKE_CHAR_DEVICE(full, 7);
@@ -64,7 +64,7 @@ TEST(OutputFile, AFullDeviceIsAWriteErrorAndStaysADevice) {
   EXPECT_EQ(entryCount(dir), 1u);
 }
 
-TEST(OutputFile, AFifoWithNoReaderIsAnErrorNotAWait) {
+TEST(AtomicFile, AFifoWithNoReaderIsAnErrorNotAWait) {
   fs::path dir = freshTempDir("output_file_fifo");
   fs::path fifo = dir / "fifo";
   ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
@@ -72,7 +72,7 @@ TEST(OutputFile, AFifoWithNoReaderIsAnErrorNotAWait) {
   EXPECT_TRUE(fs::is_fifo(fifo));
 }
 
-TEST(OutputFile, AFifoWithAReaderGetsTheBytes) {
+TEST(AtomicFile, AFifoWithAReaderGetsTheBytes) {
   fs::path dir = freshTempDir("output_file_fifo_reader");
   fs::path fifo = dir / "fifo";
   ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
@@ -88,7 +88,7 @@ TEST(OutputFile, AFifoWithAReaderGetsTheBytes) {
   EXPECT_TRUE(fs::is_fifo(fifo));
 }
 
-TEST(OutputFile, ASymlinkIsFollowedAndItsTargetReplaced) {
+TEST(AtomicFile, ASymlinkIsFollowedAndItsTargetReplaced) {
   fs::path dir = freshTempDir("output_file_symlink");
   fs::create_directories(dir / "real");
   writeFile(dir / "real" / "a.png", "old");
@@ -100,7 +100,7 @@ TEST(OutputFile, ASymlinkIsFollowedAndItsTargetReplaced) {
   EXPECT_EQ(entryCount(dir / "real"), 1u);
 }
 
-TEST(OutputFile, AnExistingFileKeepsItsModeAndANewOneFollowsTheUmask) {
+TEST(AtomicFile, AnExistingFileKeepsItsModeAndANewOneFollowsTheUmask) {
   fs::path dir = freshTempDir("output_file_mode");
   writeFile(dir / "private.png", "old");
   ASSERT_EQ(chmod((dir / "private.png").c_str(), 0600), 0);
@@ -116,7 +116,7 @@ TEST(OutputFile, AnExistingFileKeepsItsModeAndANewOneFollowsTheUmask) {
   EXPECT_EQ(st.st_mode & 07777, 0640u);
 }
 
-TEST(OutputFile, NamesUpTo255BytesAreWritten) {
+TEST(AtomicFile, NamesUpTo255BytesAreWritten) {
   fs::path dir = freshTempDir("output_file_long");
   for (size_t length : {245, 250, 255}) {
     std::string name = std::string(length - 4, 'n') + ".png";
@@ -127,7 +127,7 @@ TEST(OutputFile, NamesUpTo255BytesAreWritten) {
   EXPECT_EQ(entryCount(dir), 3u);
 }
 
-TEST(OutputFile, TheTempNameFitsTheLimitAndCutsNoCharacter) {
+TEST(AtomicFile, TheTempNameFitsTheLimitAndCutsNoCharacter) {
   EXPECT_EQ(tempTemplate("dir/a.png", 255), "dir/a.png.tmp-XXXXXX");
   std::string name = std::string(251, 'a') + ".png";
   std::string tmp = tempTemplate("/x/" + name, 255);
@@ -169,7 +169,7 @@ int signalInTheMiddleOfAWrite(const fs::path& path, int sig, bool named, size_t*
 // Every signal whose default action ends the process, in the middle of a write: the old file
 // stays and nothing else is left, whether the output has no name until commit (O_TMPFILE: no
 // file to see while it is written) or a named temporary (seen, then removed by the handler).
-TEST(OutputFile, ASignalDuringTheWriteLeavesNothingAndEndsWithTheSignal) {
+TEST(AtomicFile, ASignalDuringTheWriteLeavesNothingAndEndsWithTheSignal) {
   for (bool named : {false, true})
     for (int sig : {SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGALRM, SIGUSR1, SIGUSR2, SIGPIPE, SIGXCPU, SIGVTALRM,
                     SIGPROF}) {
@@ -184,11 +184,11 @@ TEST(OutputFile, ASignalDuringTheWriteLeavesNothingAndEndsWithTheSignal) {
     }
 }
 
-TEST(OutputFile, WithdrawRemovesWhatCommitPutInPlace) {
+TEST(AtomicFile, WithdrawRemovesWhatCommitPutInPlace) {
   fs::path dir = freshTempDir("output_file_withdraw");
   for (bool named : {false, true}) {
     if (named) setenv("RAYTEX_TEST_NAMED_TEMP", "1", 1);
-    OutputFile file((dir / "a.png").string());
+    AtomicFile file((dir / "a.png").string());
     file.write(someBytes(10));
     file.commit();
     EXPECT_TRUE(fs::exists(dir / "a.png"));
@@ -199,7 +199,7 @@ TEST(OutputFile, WithdrawRemovesWhatCommitPutInPlace) {
   }
 }
 
-TEST(OutputFile, AFileSizeLimitIsAWriteErrorThatLeavesNoTempFile) {
+TEST(AtomicFile, AFileSizeLimitIsAWriteErrorThatLeavesNoTempFile) {
   fs::path dir = freshTempDir("output_file_fsize");
   writeFile(dir / "out.png", "old");
   pid_t child = fork();

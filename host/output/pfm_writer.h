@@ -1,4 +1,4 @@
-// The PFM writer of image_output.h: "PF" (RGB) or "Pf" (grey), little-endian floats, rows
+// The PFM writer of image_writer.h: "PF" (RGB) or "Pf" (grey), little-endian floats, rows
 // bottom up. A regular file gets each band at its place as it comes; an output that cannot
 // seek gets rows appended bottom first, a band that comes early held until its turn. No Vulkan.
 #pragma once

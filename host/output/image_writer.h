@@ -1,6 +1,6 @@
 // Image output files written band by band as the rows come back from the device: PNG (8 or
 // 16 bits, sRGB), EXR (linear float or half, passes as layers) and PFM (linear float), each
-// with its passes, all written atomically (output_file.h). No Vulkan.
+// with its passes, all written atomically (atomic_file.h). No Vulkan.
 //
 // - PNG: held whole in memory (8 bits: the bytes of encodePng(encodeSrgb(...)); 16 bits:
 //   sRGB to 0..65535), written at finish(). Metadata as tEXt chunks (iTXt for a value that is
@@ -22,7 +22,7 @@
 // - The same input gives the same bytes, however it is cut into bands.
 #pragma once
 
-#include "output_file.h"
+#include "atomic_file.h"
 #include "output_formats.h"
 #include "passes.h"
 
@@ -62,12 +62,12 @@ std::string passFilePath(const OutputSpec& spec, Pass pass);
 // band, made visible together by finish(). Destroyed without finish(), it removes every
 // temporary it made and leaves existing files as they were. Throws UsageError for a bad spec
 // (checkMetadata; pass files beside standard output), IoError for a write that fails.
-class ImageOutput {
+class ImageWriter {
  public:
-  explicit ImageOutput(const OutputSpec& spec);
-  ~ImageOutput();
-  ImageOutput(const ImageOutput&) = delete;
-  ImageOutput& operator=(const ImageOutput&) = delete;
+  explicit ImageWriter(const OutputSpec& spec);
+  ~ImageWriter();
+  ImageWriter(const ImageWriter&) = delete;
+  ImageWriter& operator=(const ImageWriter&) = delete;
 
   // True when bands sent bottom first (the last rows first) are written without being held:
   // a PFM to an output that cannot seek. Otherwise top first suits every writer. Any order is
@@ -107,4 +107,4 @@ class ImageOutput {
 // was given: "warning: N non-finite colour values (written as black)" (nonFinite()) and
 // "warning: N values over the half-float range clamped to +-65504" (clamped()). Nothing when
 // both counts are 0.
-void printOutputWarnings(const ImageOutput& output, FILE* to);
+void printOutputWarnings(const ImageWriter& output, FILE* to);

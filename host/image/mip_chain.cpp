@@ -1,46 +1,12 @@
-#include "image_io.h"
+#include "mip_chain.h"
+
+#include "srgb.h"
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
-#include <cstring>
 #include <deque>
 
-#include <zlib.h>
-
 namespace {
-// stb's PNG writer with zlib's deflate at level 1 and CRC: with the sub filter, several times
-// faster than stb's own deflate, into a smaller file (docs/performance.md, "Start-up", PNG).
-// The result must be malloc'd: stb frees it with STBIW_FREE.
-unsigned char* deflateFast(unsigned char* data, int size, int* outSize, int /*stbQuality*/) {
-  uLongf bound = compressBound(uLong(size));
-  auto* out = static_cast<unsigned char*>(malloc(bound));
-  if (!out || compress2(out, &bound, data, uLong(size), Z_BEST_SPEED) != Z_OK) {
-    free(out);
-    return nullptr;
-  }
-  *outSize = int(bound);
-  return out;
-}
-}  // namespace
-
-#define STBIW_ZLIB_COMPRESS deflateFast
-#define STBIW_CRC32(buffer, length) uint32_t(crc32(0, buffer, uInt(length)))
-#define STB_IMAGE_WRITE_IMPLEMENTATION
-#include <stb_image_write.h>
-
-namespace {
-
-// sRGB code value -> linear, for the 256 codes.
-const float* srgbDecodeTable() {
-  static const std::vector<float> table = [] {
-    std::vector<float> t(256);
-    for (int i = 0; i < 256; ++i) t[size_t(i)] = float(srgbToLinear(i / 255.0));
-    return t;
-  }();
-  return table.data();
-}
 
 // Linear [0, 1] -> the nearest sRGB code value, round(linearToSrgb(v) * 255), exactly: a table
 // gives a guess within one code, and the linear values of the midpoints between codes settle it.
@@ -225,61 +191,3 @@ void writeMipLevels(const uint8_t* pixels, int width, int height, uint8_t* const
   }
 }
 
-double srgbToLinear(double c) {
-  return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
-}
-
-double linearToSrgb(double c) {
-  return c <= 0.0031308 ? 12.92 * c : 1.055 * std::pow(c, 1.0 / 2.4) - 0.055;
-}
-
-ImageRGBA8 encodeSrgb(const float* rgba, int width, int height, size_t* nonFinite) {
-  // 65536-entry table over linear [0, 1]: the steepest slope of the sRGB curve
-  // (12.92 * 255 per unit) moves less than 0.03 code values per entry.
-  static const std::vector<uint8_t> table = [] {
-    std::vector<uint8_t> t(65537);
-    for (int i = 0; i <= 65536; ++i) t[i] = uint8_t(std::lround(linearToSrgb(i / 65536.0) * 255.0));
-    return t;
-  }();
-  ImageRGBA8 out;
-  out.width = width;
-  out.height = height;
-  out.pixels.resize(size_t(width) * height * 4);
-  size_t bad = 0;
-  for (size_t i = 0; i < size_t(width) * height; ++i) {
-    for (int c = 0; c < 3; ++c) {
-      float v = rgba[i * 4 + c];
-      if (!std::isfinite(v)) {
-        ++bad;
-        v = 0.0f;
-      }
-      v = std::min(std::max(v, 0.0f), 1.0f);
-      out.pixels[i * 4 + c] = table[size_t(v * 65536.0f + 0.5f)];
-    }
-    out.pixels[i * 4 + 3] = 255;
-  }
-  if (nonFinite) *nonFinite = bad;
-  return out;
-}
-
-namespace {
-void appendBytes(void* context, void* data, int size) {
-  auto* bytes = static_cast<std::vector<uint8_t>*>(context);
-  bytes->insert(bytes->end(), static_cast<uint8_t*>(data), static_cast<uint8_t*>(data) + size);
-}
-}  // namespace
-
-std::vector<uint8_t> encodePng(const ImageRGBA8& image) {
-  // Drop alpha (always opaque): RGB PNGs are a quarter smaller and faster to encode.
-  std::vector<uint8_t> rgb(size_t(image.width) * image.height * 3);
-  for (size_t i = 0; i < size_t(image.width) * image.height; ++i)
-    memcpy(&rgb[i * 3], &image.pixels[i * 4], 3);
-  // The sub filter on every row: stb's per-row choice of the best of five filters costs more
-  // than it saves at deflate level 1.
-  stbi_write_force_png_filter = 1;
-  std::vector<uint8_t> png;
-  if (!stbi_write_png_to_func(appendBytes, &png, image.width, image.height, 3, rgb.data(),
-                              image.width * 3))
-    png.clear();
-  return png;
-}

@@ -1,10 +1,10 @@
-// Image files read before they are trusted (image_load.h, scene_images.h): only PNG and JPEG,
+// Image files read before they are trusted (image_file.h, scene_images.h): only PNG and JPEG,
 // named for what they hold; sizes from the header checked before any decoding; corrupt and
 // truncated files refused; paths that are not regular files refused without blocking. The
 // hostile files are those of the malformed corpus (tests/malformed/images/make_hostile.py).
 #include "gpu_scene.h"
-#include "image_io.h"
-#include "image_load.h"
+#include "image_file.h"
+#include "png_file.h"
 #include "parser.h"
 #include "reference_render.h"
 #include "scene_images.h"

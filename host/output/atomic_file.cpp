@@ -1,4 +1,4 @@
-#include "output_file.h"
+#include "atomic_file.h"
 
 #include "output_plan.h"
 
@@ -202,7 +202,7 @@ int publishUnnamed(int fd, const std::string& target) {
 
 }  // namespace
 
-OutputFile::OutputFile(const std::string& path) : path_(path) {
+AtomicFile::AtomicFile(const std::string& path) : path_(path) {
   if (path == "-") {
     kind_ = Kind::Stdout;
     return;
@@ -231,7 +231,7 @@ OutputFile::OutputFile(const std::string& path) : path_(path) {
   }
 }
 
-OutputFile::~OutputFile() {
+AtomicFile::~AtomicFile() {
   if (fd_ >= 0) close(fd_);
   if (slot_ >= 0) {
     withSignalsBlocked([&] {
@@ -242,7 +242,7 @@ OutputFile::~OutputFile() {
   if (signalsHeld_) releaseSignals();
 }
 
-void OutputFile::write(const uint8_t* data, size_t size) {
+void AtomicFile::write(const uint8_t* data, size_t size) {
   if (kind_ == Kind::Stdout) {
     // Errors show at the final flush (main.cpp), with their errno.
     if (fwrite(data, 1, size, stdout) != size)
@@ -252,12 +252,12 @@ void OutputFile::write(const uint8_t* data, size_t size) {
   if (!writeAll(fd_, data, size, -1)) fail(path_, errno);
 }
 
-void OutputFile::writeAt(uint64_t offset, const uint8_t* data, size_t size) {
+void AtomicFile::writeAt(uint64_t offset, const uint8_t* data, size_t size) {
   if (!seekable()) throw Error(ErrorKind::Internal, "'" + path_ + "' cannot be written out of order");
   if (!writeAll(fd_, data, size, int64_t(offset))) fail(path_, errno);
 }
 
-void OutputFile::commit() {
+void AtomicFile::commit() {
   if (committed_ || kind_ == Kind::Stdout) {
     committed_ = true;
     return;
@@ -280,7 +280,7 @@ void OutputFile::commit() {
   committed_ = true;
 }
 
-void OutputFile::withdraw() {
+void AtomicFile::withdraw() {
   if (published_) unlink(target_.c_str());
   published_ = false;
 }
@@ -299,7 +299,7 @@ std::string tempTemplate(const std::string& path, size_t nameMax) {
 }
 
 void writeFileAtomic(const std::string& path, const std::vector<uint8_t>& bytes) {
-  OutputFile file(path);
+  AtomicFile file(path);
   file.write(bytes);
   file.commit();
 }

@@ -1,7 +1,6 @@
-#include "float_input.h"
+#include "float_file.h"
 
 #include "error.h"
-#include "image_load.h"
 #include "input_file.h"
 
 #include <algorithm>

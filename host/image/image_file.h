@@ -1,17 +1,16 @@
-// Image files read from disk: PNG (libpng) and JPEG (libjpeg-turbo) only, named by their
-// extension (.png, .jpg, .jpeg, any case) and checked against their content. A header probe
-// reads the size without decoding, so that callers can refuse an image before allocating for
-// it. Corrupt or truncated files are refused, never decoded in part. No Vulkan.
+// Image files raytex reads: PNG (png_file.h) and JPEG (jpeg_file.h), named by their extension (.png,
+// .jpg, .jpeg, any case) and checked against their content. Textures decode to 8-bit sRGB RGBA
+// (probeImage, decodeImage, loadImage); `raytex diff` reads them as linear float RGB
+// (readSrgbImage; EXR and PFM come from float_file.h). A header probe reads the size without
+// decoding, so that callers can refuse an image before allocating for it. Corrupt or truncated
+// files are refused, never decoded in part. No Vulkan.
 #pragma once
 
 #include "error.h"
-#include "image_io.h"
+#include "image.h"
 
 #include <cstdint>
 #include <string>
-
-// Largest width or height of an image file raytex decodes.
-constexpr int kMaxImageFileSide = 16384;
 
 enum class ImageFormat { Png, Jpeg };
 
@@ -19,6 +18,7 @@ struct ImageHeader {
   int width = 0;
   int height = 0;
   ImageFormat format = ImageFormat::Png;
+  int depth = 8;  // bits a channel as stored: 1 to 16 for a PNG, 8 for a JPEG
 };
 
 // Reads the file's signature and header only: its format (which must match its extension),
@@ -34,3 +34,12 @@ void decodeImage(const std::string& path, const ImageHeader& header, uint8_t* rg
 
 // probeImage, then decodeImage into the image's pixels. Throws ImageInputError.
 ImageRGBA8 loadImage(const std::string& path);
+
+struct LinearImage {
+  FloatImage image;  // 3 channels (RGB), linear
+  bool lowDynamicRange = false;  // PNG, JPEG: values in [0, 1] by construction
+};
+
+// A PNG (16 bits at full precision) or JPEG as linear float RGB, alpha dropped, refused before
+// decoding when its floats would take more than maxBytes. Throws ImageInputError naming the path.
+LinearImage readSrgbImage(const std::string& path, uint64_t maxBytes);

@@ -17,7 +17,7 @@
 #pragma once
 
 #include "error.h"
-#include "image_io.h"
+#include "png_file.h"
 
 #include <cstdint>
 #include <cstdio>
@@ -28,12 +28,12 @@
 // created, or the device or FIFO opened) on construction, made visible by commit(). Destroyed
 // without commit, it removes its temporary and the path keeps what it held. Every failure
 // throws IoError naming the path.
-class OutputFile {
+class AtomicFile {
  public:
-  explicit OutputFile(const std::string& path);
-  ~OutputFile();
-  OutputFile(const OutputFile&) = delete;
-  OutputFile& operator=(const OutputFile&) = delete;
+  explicit AtomicFile(const std::string& path);
+  ~AtomicFile();
+  AtomicFile(const AtomicFile&) = delete;
+  AtomicFile& operator=(const AtomicFile&) = delete;
 
   const std::string& path() const { return path_; }
   // A regular file (through its temporary): writeAt may place bytes anywhere.
@@ -63,7 +63,7 @@ class OutputFile {
   bool published_ = false;  // commit() put the file at the path
 };
 
-// Writes `bytes` to `path` through an OutputFile. Throws IoError naming the path.
+// Writes `bytes` to `path` through an AtomicFile. Throws IoError naming the path.
 void writeFileAtomic(const std::string& path, const std::vector<uint8_t>& bytes);
 
 // Writes `bytes` to `path` with writeFileAtomic ("-": standard output). Throws IoError.

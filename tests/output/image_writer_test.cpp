@@ -1,9 +1,10 @@
-// The output writers (image_output.h, output_file.h): the same bytes however the rows come,
+// The output writers (image_writer.h, atomic_file.h): the same bytes however the rows come,
 // PFM and PNG bytes parsed here by their specifications, EXR read back through OpenEXR, and
 // nothing left behind by a writer that does not finish. No device.
-#include "image_io.h"
-#include "image_output.h"
-#include "output_file.h"
+#include "png_file.h"
+#include "srgb.h"
+#include "image_writer.h"
+#include "atomic_file.h"
 #include "support/band_images.h"
 #include "support/files.h"
 #include "support/format.h"
@@ -137,7 +138,7 @@ std::vector<Chunk> chunks(const std::string& png) {
 
 const std::vector<Pass> kSomePasses = {Pass::Normal, Pass::Depth, Pass::Position, Pass::Albedo, Pass::Footprint};
 
-TEST(ImageOutput, OneBandOrSeveralInAnyOrderGiveTheSameBytes) {
+TEST(ImageWriter, OneBandOrSeveralInAnyOrderGiveTheSameBytes) {
   const fs::path dir = freshTempDir("image_output_bands");
   const BandImage image = bandImage(23, 17, kSomePasses);
   struct Case {
@@ -157,7 +158,7 @@ TEST(ImageOutput, OneBandOrSeveralInAnyOrderGiveTheSameBytes) {
       spec.pngDepth = c.depth;
       spec.half = c.half;
       spec.metadata = {{"Software", "raytex"}};
-      ImageOutput output(spec);
+      ImageWriter output(spec);
       writeBands(output, image, 5, orders[o]);
       output.finish();
       files.emplace_back();
@@ -169,7 +170,7 @@ TEST(ImageOutput, OneBandOrSeveralInAnyOrderGiveTheSameBytes) {
   }
 }
 
-TEST(ImageOutput, PfmHasItsHeaderAndItsRowsBottomUp) {
+TEST(ImageWriter, PfmHasItsHeaderAndItsRowsBottomUp) {
   const fs::path dir = freshTempDir("image_output_pfm");
   const std::vector<Pass> passes = {Pass::Normal, Pass::Depth, Pass::Footprint};
   const BandImage image = bandImage(9, 6, passes);
@@ -220,7 +221,7 @@ struct FifoReader {
   }
 };
 
-TEST(ImageOutput, AFifoGetsTheBytesOfAFileInEitherBandOrder) {
+TEST(ImageWriter, AFifoGetsTheBytesOfAFileInEitherBandOrder) {
   const fs::path dir = freshTempDir("image_output_fifo");
   const BandImage image = bandImage(31, 40, {});
   for (OutputFormat format : {OutputFormat::Png, OutputFormat::Exr, OutputFormat::Pfm}) {
@@ -235,7 +236,7 @@ TEST(ImageOutput, AFifoGetsTheBytesOfAFileInEitherBandOrder) {
       reader.fd = open(fifo.c_str(), O_RDONLY | O_NONBLOCK);
       ASSERT_GE(reader.fd, 0);
       {
-        ImageOutput output(bandSpec(fifo.string(), format, image, {}));
+        ImageWriter output(bandSpec(fifo.string(), format, image, {}));
         EXPECT_EQ(output.bottomUp(), format == OutputFormat::Pfm) << ext;
         reader.start();
         writeBands(output, image, 7, order);
@@ -271,7 +272,7 @@ std::map<std::string, std::vector<float>> readChannels(const std::string& path, 
   return planes;
 }
 
-TEST(ImageOutput, ExrHoldsTheFloatsThePassesAsLayersAndTheMetadata) {
+TEST(ImageWriter, ExrHoldsTheFloatsThePassesAsLayersAndTheMetadata) {
   const fs::path dir = freshTempDir("image_output_exr");
   const std::vector<Pass> passes = {Pass::Normal, Pass::Depth, Pass::Footprint};
   const BandImage image = bandImage(13, 11, passes);
@@ -310,7 +311,7 @@ TEST(ImageOutput, ExrHoldsTheFloatsThePassesAsLayersAndTheMetadata) {
   }
 }
 
-TEST(ImageOutput, HalfExrIsWithinHalfPrecisionButPositionStaysFloat) {
+TEST(ImageWriter, HalfExrIsWithinHalfPrecisionButPositionStaysFloat) {
   const fs::path dir = freshTempDir("image_output_half");
   const std::vector<Pass> passes = {Pass::Normal, Pass::Position};
   const BandImage image = bandImage(17, 9, passes);
@@ -340,7 +341,7 @@ TEST(ImageOutput, HalfExrIsWithinHalfPrecisionButPositionStaysFloat) {
   EXPECT_NE(bitsOf(planes["R"][3]), bitsOf(image.rgba[3 * 4])) << "not rounded to half: the test proves nothing";
 }
 
-TEST(ImageOutput, HalfExrClampsFiniteValuesBeyondTheHalfRangeAndCountsThem) {
+TEST(ImageWriter, HalfExrClampsFiniteValuesBeyondTheHalfRangeAndCountsThem) {
   const fs::path dir = freshTempDir("image_output_half_clamp");
   const std::vector<Pass> passes = {Pass::Depth, Pass::Position};
   BandImage image = bandImage(7, 5, passes);
@@ -355,7 +356,7 @@ TEST(ImageOutput, HalfExrClampsFiniteValuesBeyondTheHalfRangeAndCountsThem) {
   image.passes[1][9 * 4] = 1e6f;     // position: float, never clamped
   OutputSpec spec = bandSpec((dir / "img.exr").string(), OutputFormat::Exr, image, passes);
   spec.half = true;
-  ImageOutput output(spec);
+  ImageWriter output(spec);
   writeBands(output, image, 2, BandOrder::Shuffled);
   output.finish();
   EXPECT_EQ(output.clamped(), 5u);
@@ -377,7 +378,7 @@ TEST(ImageOutput, HalfExrClampsFiniteValuesBeyondTheHalfRangeAndCountsThem) {
       EXPECT_TRUE(nearHalf(planes[std::string(1, "RGB"[c])][i], image.rgba[i * 4 + size_t(c)])) << i << " " << c;
 }
 
-TEST(ImageOutput, Png8WithoutMetadataIsTheBytesOfEncodePngAndCountsNonFiniteValues) {
+TEST(ImageWriter, Png8WithoutMetadataIsTheBytesOfEncodePngAndCountsNonFiniteValues) {
   const fs::path dir = freshTempDir("image_output_png8");
   BandImage image = bandImage(21, 13, {});
   image.rgba[5 * 4 + 0] = NAN;
@@ -392,7 +393,7 @@ TEST(ImageOutput, Png8WithoutMetadataIsTheBytesOfEncodePngAndCountsNonFiniteValu
   EXPECT_TRUE(readFile(dir / "img.png") == std::string(png.begin(), png.end()));
 }
 
-TEST(ImageOutput, Png16DecodesToTheSrgbValuesOfTheFloats) {
+TEST(ImageWriter, Png16DecodesToTheSrgbValuesOfTheFloats) {
   const fs::path dir = freshTempDir("image_output_png16");
   BandImage image = bandImage(19, 7, {});
   image.rgba[3 * 4 + 1] = NAN;
@@ -415,7 +416,7 @@ TEST(ImageOutput, Png16DecodesToTheSrgbValuesOfTheFloats) {
     }
 }
 
-TEST(ImageOutput, PngMetadataIsTextChunksAfterIhdrWithValidCrcs) {
+TEST(ImageWriter, PngMetadataIsTextChunksAfterIhdrWithValidCrcs) {
   const fs::path dir = freshTempDir("image_output_text");
   const BandImage image = bandImage(8, 5, {Pass::Albedo});
   const Metadata metadata = {{"Software", "raytex"}, {"Comment", "a sphere\nand a plane"}, {"Title", "caf\xc3\xa9"}};
@@ -444,7 +445,7 @@ TEST(ImageOutput, PngMetadataIsTextChunksAfterIhdrWithValidCrcs) {
   }
 }
 
-TEST(ImageOutput, APassThatFitsTheUnitRangeIsAnSrgbPngBesideThePfm) {
+TEST(ImageWriter, APassThatFitsTheUnitRangeIsAnSrgbPngBesideThePfm) {
   const fs::path dir = freshTempDir("image_output_albedo");
   const BandImage image = bandImage(6, 4, {Pass::Albedo});
   writeBandImage(bandSpec((dir / "img.pfm").string(), OutputFormat::Pfm, image, {Pass::Albedo}), image, 3,
@@ -457,7 +458,7 @@ TEST(ImageOutput, APassThatFitsTheUnitRangeIsAnSrgbPngBesideThePfm) {
       EXPECT_NEAR(png.pixels[i * 3 + c], std::lround(srgbOracle(image.passes[0][i * 4 + c]) * 255.0), 1);
 }
 
-TEST(ImageOutput, DestroyedBeforeFinishItLeavesNoFileAndNoTemporary) {
+TEST(ImageWriter, DestroyedBeforeFinishItLeavesNoFileAndNoTemporary) {
   const std::vector<Pass> passes = {Pass::Normal, Pass::Albedo};
   const BandImage image = bandImage(10, 8, passes);
   for (const char* name : {"out.png", "out.exr", "out.pfm"}) {
@@ -466,7 +467,7 @@ TEST(ImageOutput, DestroyedBeforeFinishItLeavesNoFileAndNoTemporary) {
     writeFile(dir / "out.normal.pfm", "old pass");
     const OutputFormat format = outputFormatFor((dir / name).string());
     {
-      ImageOutput output(bandSpec((dir / name).string(), format, image, passes));
+      ImageWriter output(bandSpec((dir / name).string(), format, image, passes));
       output.writeBand(0, 3, image.rgba.data(), {image.passes[0].data(), image.passes[1].data()});
       EXPECT_EQ(entryCount(dir), 2u) << name;  // the files being written have no names (O_TMPFILE)
     }
@@ -476,7 +477,7 @@ TEST(ImageOutput, DestroyedBeforeFinishItLeavesNoFileAndNoTemporary) {
   }
 }
 
-TEST(ImageOutput, RowsMissingOrWrittenTwiceAreRefusedAndNothingIsWritten) {
+TEST(ImageWriter, RowsMissingOrWrittenTwiceAreRefusedAndNothingIsWritten) {
   const fs::path dir = freshTempDir("image_output_rows");
   const BandImage image = bandImage(5, 6, {});
   const auto kindOf = [](const std::function<void()>& step) {
@@ -488,7 +489,7 @@ TEST(ImageOutput, RowsMissingOrWrittenTwiceAreRefusedAndNothingIsWritten) {
     return ErrorKind::Usage;  // not thrown
   };
   for (const char* name : {"a.png", "a.exr", "a.pfm"}) {
-    ImageOutput output(bandSpec((dir / name).string(), outputFormatFor(name), image, {}));
+    ImageWriter output(bandSpec((dir / name).string(), outputFormatFor(name), image, {}));
     output.writeBand(0, 2, image.rgba.data(), {});
     EXPECT_EQ(kindOf([&] { output.writeBand(1, 2, image.rgba.data(), {}); }), ErrorKind::Internal) << name;
     EXPECT_EQ(kindOf([&] { output.writeBand(5, 2, image.rgba.data(), {}); }), ErrorKind::Internal) << name;
@@ -499,7 +500,7 @@ TEST(ImageOutput, RowsMissingOrWrittenTwiceAreRefusedAndNothingIsWritten) {
 
 // Named temporaries (as where the file system refuses O_TMPFILE): the signal handler removes
 // every one of the image's files.
-TEST(ImageOutput, ASignalRemovesEveryTemporaryOfTheImage) {
+TEST(ImageWriter, ASignalRemovesEveryTemporaryOfTheImage) {
   const fs::path dir = freshTempDir("image_output_signal");
   const std::vector<Pass> passes = {Pass::Normal, Pass::Depth, Pass::Albedo};
   const BandImage image = bandImage(10, 8, passes);
@@ -507,7 +508,7 @@ TEST(ImageOutput, ASignalRemovesEveryTemporaryOfTheImage) {
   if (child == 0) {
     signal(SIGTERM, SIG_DFL);
     setenv("RAYTEX_TEST_NAMED_TEMP", "1", 1);
-    ImageOutput output(bandSpec((dir / "out.png").string(), OutputFormat::Png, image, passes));
+    ImageWriter output(bandSpec((dir / "out.png").string(), OutputFormat::Png, image, passes));
     _exit(entryCount(dir) == 4 && raise(SIGTERM) == 0 ? 0 : 3);
   }
   int status = 0;
@@ -518,12 +519,12 @@ TEST(ImageOutput, ASignalRemovesEveryTemporaryOfTheImage) {
 
 // The pass files are put in place first and the image last: when one cannot be, the files this
 // output put in place are removed and the older image stays.
-TEST(ImageOutput, AFailedPublishRemovesThePassesAndKeepsTheOlderImage) {
+TEST(ImageWriter, AFailedPublishRemovesThePassesAndKeepsTheOlderImage) {
   const fs::path dir = freshTempDir("image_output_publish");
   const std::vector<Pass> passes = {Pass::Normal, Pass::Albedo};
   const BandImage image = bandImage(6, 4, passes);
   writeFile(dir / "out.png", "old");
-  ImageOutput output(bandSpec((dir / "out.png").string(), OutputFormat::Png, image, passes));
+  ImageWriter output(bandSpec((dir / "out.png").string(), OutputFormat::Png, image, passes));
   output.writeBand(0, 4, image.rgba.data(), {image.passes[0].data(), image.passes[1].data()});
   fs::create_directory(dir / "out.albedo.png");  // the second pass cannot take its name
   EXPECT_THROW(output.finish(), IoError);
@@ -532,7 +533,7 @@ TEST(ImageOutput, AFailedPublishRemovesThePassesAndKeepsTheOlderImage) {
   EXPECT_EQ(entryCount(dir), 2u);
 }
 
-TEST(ImageOutput, PassFilesAreNamedAfterTheStem) {
+TEST(ImageWriter, PassFilesAreNamedAfterTheStem) {
   OutputSpec spec;
   spec.path = "dir/out.png";
   EXPECT_EQ(passFilePath(spec, Pass::Normal), "dir/out.normal.pfm");
@@ -546,7 +547,7 @@ TEST(ImageOutput, PassFilesAreNamedAfterTheStem) {
   spec.format = OutputFormat::Png;
   spec.width = spec.height = 4;
   spec.passes = {Pass::Depth};
-  EXPECT_THROW(ImageOutput output(spec), UsageError);
+  EXPECT_THROW(ImageWriter output(spec), UsageError);
 }
 
 std::string usageError(const std::function<void()>& step) {
@@ -558,7 +559,7 @@ std::string usageError(const std::function<void()>& step) {
   return "";
 }
 
-TEST(ImageOutput, MetadataKeysArePngKeywords) {
+TEST(ImageWriter, MetadataKeysArePngKeywords) {
   const auto check = [](const Metadata& m, OutputFormat f) { return usageError([&] { checkMetadata(m, f); }); };
   EXPECT_EQ(check({{"Software", "raytex"}, {"channels", "x"}}, OutputFormat::Png), "");
   EXPECT_EQ(check({{"", "x"}}, OutputFormat::Png), "metadata key '': it must be 1 to 79 characters");
@@ -588,11 +589,11 @@ TEST(OutputFormat, TheExtensionNamesTheFormatInAnyCase) {
   EXPECT_EQ(outputFormatFor((dir / "fifo.exr").string()), OutputFormat::Exr);
 }
 
-TEST(OutputFile, WritesAtOffsetsAndLeavesNothingUncommitted) {
+TEST(AtomicFile, WritesAtOffsetsAndLeavesNothingUncommitted) {
   const fs::path dir = freshTempDir("output_file_offsets");
   writeFile(dir / "out.bin", "old");
   {
-    OutputFile file((dir / "out.bin").string());
+    AtomicFile file((dir / "out.bin").string());
     EXPECT_TRUE(file.seekable());
     const uint8_t head[] = {'a', 'b'}, tail[] = {'y', 'z'};
     file.writeAt(4, tail, 2);
@@ -605,7 +606,7 @@ TEST(OutputFile, WritesAtOffsetsAndLeavesNothingUncommitted) {
   EXPECT_EQ(readFile(dir / "out.bin"), "ababyz");
   EXPECT_EQ(entryCount(dir), 1u);
   {
-    OutputFile file((dir / "out.bin").string());
+    AtomicFile file((dir / "out.bin").string());
     file.write(reinterpret_cast<const uint8_t*>("new"), 3);
   }
   EXPECT_EQ(readFile(dir / "out.bin"), "ababyz");

@@ -1,6 +1,6 @@
-#include "image_io.h"
-#include "image_load.h"
-#include "output_file.h"
+#include "image_file.h"
+#include "srgb.h"
+#include "atomic_file.h"
 #include "support/files.h"
 #include "support/image_diff.h"
 

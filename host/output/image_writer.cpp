@@ -1,10 +1,10 @@
-#include "image_output.h"
+#include "image_writer.h"
 
 #include "band_sink.h"
 #include "error.h"
 #include "output_formats.h"
-#include "pfm_output.h"
-#include "png_output.h"
+#include "pfm_writer.h"
+#include "png_writer.h"
 
 #include <algorithm>
 #include <cctype>
@@ -69,7 +69,7 @@ std::string passFilePath(const OutputSpec& spec, Pass pass) {
   return stem + "." + info.name + (info.fitsUnit ? ".png" : ".pfm");
 }
 
-ImageOutput::ImageOutput(const OutputSpec& spec) : spec_(spec) {
+ImageWriter::ImageWriter(const OutputSpec& spec) : spec_(spec) {
   checkSpec(spec);
   rowWritten_.assign(size_t(spec.height), false);
   paths_.push_back(spec.path);
@@ -81,13 +81,13 @@ ImageOutput::ImageOutput(const OutputSpec& spec) : spec_(spec) {
   }
 }
 
-ImageOutput::~ImageOutput() = default;
+ImageWriter::~ImageWriter() = default;
 
-bool ImageOutput::bottomUp() const {
+bool ImageWriter::bottomUp() const {
   return std::any_of(sinks_.begin(), sinks_.end(), [](const auto& sink) { return sink->bottomUp(); });
 }
 
-void ImageOutput::writeBand(int firstRow, int rows, const float* rgba, const std::vector<const float*>& passes) {
+void ImageWriter::writeBand(int firstRow, int rows, const float* rgba, const std::vector<const float*>& passes) {
   const bool inside = firstRow >= 0 && rows > 0 && rows <= spec_.height - firstRow;
   if (!inside || passes.size() != spec_.passes.size())
     throw Error(ErrorKind::Internal, "'" + spec_.path + "': a band of rows " + std::to_string(firstRow) + " to " +
@@ -102,7 +102,7 @@ void ImageOutput::writeBand(int firstRow, int rows, const float* rgba, const std
   for (auto& sink : sinks_) sink->write(band);
 }
 
-void ImageOutput::finish() {
+void ImageWriter::finish() {
   const auto missing = std::find(rowWritten_.begin(), rowWritten_.end(), false);
   if (missing != rowWritten_.end())
     throw Error(ErrorKind::Internal, "'" + spec_.path + "': row " +
@@ -111,7 +111,7 @@ void ImageOutput::finish() {
   publish();
 }
 
-void ImageOutput::publish() {
+void ImageWriter::publish() {
   // The passes first and the image last: a failure on the way removes the files this output put
   // in place, and an image from an earlier render stays as it was.
   size_t published = 0;
@@ -123,13 +123,13 @@ void ImageOutput::publish() {
   }
 }
 
-size_t ImageOutput::nonFinite() const { return sinks_.front()->nonFinite(); }
+size_t ImageWriter::nonFinite() const { return sinks_.front()->nonFinite(); }
 
-size_t ImageOutput::clamped() const { return sinks_.front()->clamped(); }
+size_t ImageWriter::clamped() const { return sinks_.front()->clamped(); }
 
-std::vector<std::string> ImageOutput::paths() const { return paths_; }
+std::vector<std::string> ImageWriter::paths() const { return paths_; }
 
-void printOutputWarnings(const ImageOutput& output, FILE* to) {
+void printOutputWarnings(const ImageWriter& output, FILE* to) {
   if (output.nonFinite() > 0)
     fprintf(to, "warning: %zu non-finite colour values (written as black)\n", output.nonFinite());
   if (output.clamped() > 0)

@@ -1,4 +1,4 @@
-// The EXR writer of image_output.h (OpenEXR): a scanline file, ZIP, INCREASING_Y, whose rows
+// The EXR writer of image_writer.h (OpenEXR): a scanline file, ZIP, INCREASING_Y, whose rows
 // are handed to OpenEXR as their band comes (a band that comes early is held until its turn:
 // top first suits it). Channels R, G, B and A = 1, float or half (a finite value beyond the
 // half range is written as +-65504, the largest half, and counted: BandSink::clamped()); each
@@ -11,7 +11,7 @@
 #pragma once
 
 #include "band_sink.h"
-#include "image_output.h"
+#include "image_writer.h"
 
 #include <memory>
 

@@ -1,4 +1,4 @@
-#include "render_output.h"
+#include "render_files.h"
 
 #include <cstdio>
 

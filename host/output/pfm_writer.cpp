@@ -1,7 +1,7 @@
-#include "pfm_output.h"
+#include "pfm_writer.h"
 
 #include "error.h"
-#include "output_file.h"
+#include "atomic_file.h"
 
 #include <cstdint>
 #include <cstring>
@@ -65,7 +65,7 @@ struct PfmSink : BandSink {
   void commit() override { file.commit(); }
   void withdraw() override { file.withdraw(); }
 
-  OutputFile file;
+  AtomicFile file;
   int width, height, source, channels;
   size_t headerBytes = 0;
   int nextEnd;  // cannot seek: the rows from here down are written

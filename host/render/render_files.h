@@ -3,7 +3,7 @@
 #pragma once
 
 #include "render_options.h"
-#include "image_output.h"
+#include "image_writer.h"
 #include "output_plan.h"
 #include "scene.h"
 
@@ -23,7 +23,7 @@ struct RenderFacts {
 // also the scene's path, the device and the render time from `facts`.
 Metadata renderMetadata(const RenderOptions& options, const RenderJob& job, const RenderFacts& facts);
 
-// The files a render of `job` writes to options.output: its format from the name (output_file.h,
+// The files a render of `job` writes to options.output: its format from the name (atomic_file.h,
 // outputFormatFor), --depth, --half and --aov.
 OutputSpec renderOutputSpec(const RenderOptions& options, const RenderJob& job, const Metadata& metadata);
 

@@ -1,7 +1,7 @@
-#include "exr_output.h"
+#include "exr_writer.h"
 
 #include "error.h"
-#include "output_file.h"
+#include "atomic_file.h"
 
 #include <algorithm>
 #include <cmath>
@@ -33,11 +33,11 @@ Imath::half toHalf(float value, size_t& clamped) {
   return Imath::half(value);
 }
 
-// OpenEXR's output stream over an OutputFile: in place for a regular file, else in memory until
+// OpenEXR's output stream over an AtomicFile: in place for a regular file, else in memory until
 // flush(). A failure is kept, since OpenEXR swallows those of its destructor.
 class ExrStream : public Imf::OStream {
  public:
-  explicit ExrStream(OutputFile& file) : Imf::OStream(file.path().c_str()), file_(file) {}
+  explicit ExrStream(AtomicFile& file) : Imf::OStream(file.path().c_str()), file_(file) {}
 
   void write(const char c[], int n) override {
     try {
@@ -65,7 +65,7 @@ class ExrStream : public Imf::OStream {
   }
 
  private:
-  OutputFile& file_;
+  AtomicFile& file_;
   uint64_t position_ = 0;
   std::vector<uint8_t> memory_;
   std::exception_ptr failure_;
@@ -199,7 +199,7 @@ struct ExrSink : BandSink {
 
   OutputSpec spec;
   std::vector<ExrChannel> channels;
-  OutputFile file;
+  AtomicFile file;
   ExrStream stream;
   std::vector<float> ones;  // A: one row, every row
   std::vector<Imath::half> halfOnes;

@@ -1,10 +1,10 @@
-// readExr and readPfm (host/image/float_input.h): files the writers made read back exactly, files
+// readExr and readPfm (host/image/float_file.h): files the writers made read back exactly, files
 // written here by the formats' specifications (big-endian PFM, an EXR of Y alone, a data window
 // away from the origin) or by OpenEXR's RgbaOutputFile (luminance and chroma), and every kind
 // of bad file refused with a message naming it.
-#include "float_input.h"
+#include "float_file.h"
 #include "image_metrics.h"
-#include "image_output.h"
+#include "image_writer.h"
 #include "output_formats.h"
 #include "support/band_images.h"
 #include "support/files.h"

@@ -1,19 +1,10 @@
-// Images in memory and pixel conversions: resampling, mip chains, sRGB encode, PNG encode,
-// and image comparison for tests (image_load.h reads image files; output_file.h writes them).
-// No Vulkan.
+// Mip chains of 8-bit sRGB images, averaged in linear light. No Vulkan.
 #pragma once
 
+#include "image.h"
+
 #include <cstdint>
-#include <string>
 #include <vector>
-
-struct ImageRGBA8 {
-  int width = 0;
-  int height = 0;
-  std::vector<uint8_t> pixels;  // row 0 at the top, 4 bytes per pixel
-};
-
-
 
 // Number of levels of a full mip chain: floor(log2(max(width, height))) + 1.
 int mipLevelCount(int width, int height);
@@ -31,14 +22,3 @@ std::vector<ImageRGBA8> mipChain(ImageRGBA8&& image);  // moves the image into l
 // bytes. Made row by row: besides the output, it holds a few rows of
 // floats per level, never a whole level.
 void writeMipLevels(const uint8_t* pixels, int width, int height, uint8_t* const* out);
-
-// Linear float RGBA (row 0 at the top) to sRGB-encoded RGBA8, clamped to [0, 1].
-// Non-finite channels become 0 and are counted in *nonFinite when given.
-ImageRGBA8 encodeSrgb(const float* rgba, int width, int height, size_t* nonFinite = nullptr);
-
-double srgbToLinear(double encoded);  // encoded in [0, 1]
-double linearToSrgb(double linear);   // linear in [0, 1]
-
-// The PNG file's bytes (RGB, 8 bits; alpha dropped); empty if encoding failed.
-std::vector<uint8_t> encodePng(const ImageRGBA8& image);
-
