@@ -1,6 +1,6 @@
 // What a trace kernel is built for: every specialisation constant (SPEC_* in shaders/common.h)
 // by name, in one key made by one function from a packed scene and the render's options. The
-// pipeline cache (renderer.cpp) is keyed on it and createTracePipeline (pipeline.cpp) maps its
+// pipeline cache (frame_kernels.cpp) is keyed on it and createTracePipeline (pipeline.cpp) maps its
 // fields to the constants. No Vulkan.
 #pragma once
 

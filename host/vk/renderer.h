@@ -1,5 +1,9 @@
-// Owns the device-side state of one scene and renders it: upload, specialised
-// pipeline, dispatch, readback. Shared by every output (PNG, tests).
+// Owns the device-side state of one scene and renders it: upload, specialised pipelines,
+// dispatch, readback. Shared by every output (PNG, tests). Its functions live by concern:
+// renderer.cpp (create, destroy), scene_buffers.cpp (uploadScene, updateSceneBuffers),
+// frame_buffers.cpp (the output, pass, accumulation and edge-list buffers), frame_kernels.cpp
+// (preparePipeline, prepareTileKernels, pipelineWarm, warmPipeline) and dispatch.cpp
+// (selectBand, renderFrame, renderSample, readbackFrame, the pixels and passes).
 #pragma once
 
 #include "device.h"
