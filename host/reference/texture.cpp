@@ -5,12 +5,12 @@
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
+#include <glm/gtc/constants.hpp>
 
 #include <cmath>
 #include <stdexcept>
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 
 double clamp01(double t) { return std::fmin(std::fmax(t, 0.0), 1.0); }
 
@@ -37,7 +37,7 @@ double noiseReference(const TextureDesc& t, const TexCoordD& tc) {
 // profile keeps the color2 veins thin.
 double marbleReference(const TextureDesc& t, const TexCoordD& tc) {
   const glm::dvec3 q = tc.solid * double(t.scale);
-  const double s = 0.5 + 0.5 * std::sin(kPi * (q.x + q.y) + double(t.strength) * turbulence(q, t.octaves));
+  const double s = 0.5 + 0.5 * std::sin(glm::pi<double>() * (q.x + q.y) + double(t.strength) * turbulence(q, t.octaves));
   return clamp01(s * s * s);
 }
 
