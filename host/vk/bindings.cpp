@@ -2,6 +2,8 @@
 
 #include "common.h"
 
+#include <algorithm>
+
 namespace {
 
 constexpr VkDescriptorType kStorage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
@@ -57,6 +59,17 @@ VkDescriptorSetLayout createTraceSetLayout(const Device& device) {
   VkDescriptorSetLayout layout = VK_NULL_HANDLE;
   VK_CHECK(vkCreateDescriptorSetLayout(device.device, &info, nullptr, &layout));
   return layout;
+}
+
+std::vector<VkDescriptorPoolSize> traceDescriptorCounts() {
+  std::vector<VkDescriptorPoolSize> sizes;
+  for (const TraceBinding& row : traceBindings()) {
+    auto same = [&](const VkDescriptorPoolSize& s) { return s.type == row.type; };
+    auto it = std::find_if(sizes.begin(), sizes.end(), same);
+    if (it == sizes.end()) sizes.push_back({row.type, row.count});
+    else it->descriptorCount += row.count;
+  }
+  return sizes;
 }
 
 void writeTraceDescriptors(Renderer& r) {

@@ -1,6 +1,6 @@
 // The trace kernel's descriptor set (set 0): one row per BINDING_* of shaders/common.h, with its
-// descriptor type, its count and the renderer's resource behind it. The set layout and the
-// descriptor writes are both made from these rows; the kernel declares each binding once
+// descriptor type, its count and the renderer's resource behind it. The set layout, the
+// descriptor pool's sizes and the descriptor writes are all made from these rows; the kernel declares each binding once
 // (shaders/trace.comp.glsl), and the validation layers check the two against each other.
 #pragma once
 
@@ -21,6 +21,9 @@ struct TraceBinding {
 const std::vector<TraceBinding>& traceBindings();
 
 VkDescriptorSetLayout createTraceSetLayout(const Device& device);
+
+// The descriptors of one set of that layout, per descriptor type: the pool's sizes.
+std::vector<VkDescriptorPoolSize> traceDescriptorCounts();
 
 // Points each binding of r.descriptorSet at its resource: the buffers, r.display, and the
 // scene's images (r.placeholder past them), all with r.sampler.

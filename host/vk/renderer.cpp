@@ -39,15 +39,11 @@ void createDescriptorSet(Renderer& r) {
   layoutInfo.setLayoutCount = 1;
   layoutInfo.pSetLayouts = &r.setLayout;
   VK_CHECK(vkCreatePipelineLayout(r.device.device, &layoutInfo, nullptr, &r.pipelineLayout));
-  const VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1},
-                                        {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 7},
-                                        {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, 1},
-                                        {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 9},
-                                        {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, MAX_IMAGES}};
+  const std::vector<VkDescriptorPoolSize> sizes = traceDescriptorCounts();
   VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
   poolInfo.maxSets = 1;
-  poolInfo.poolSizeCount = uint32_t(std::size(sizes));
-  poolInfo.pPoolSizes = sizes;
+  poolInfo.poolSizeCount = uint32_t(sizes.size());
+  poolInfo.pPoolSizes = sizes.data();
   VK_CHECK(vkCreateDescriptorPool(r.device.device, &poolInfo, nullptr, &r.descriptorPool));
   VkDescriptorSetAllocateInfo setInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
   setInfo.descriptorPool = r.descriptorPool;
