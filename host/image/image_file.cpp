@@ -179,5 +179,7 @@ LinearImage readSrgbImage(const std::string& path, uint64_t maxBytes) {
   const ImageHeader header = probeImage(path);
   checkBudget(path, header.width, header.height, maxBytes);
   if (header.format == ImageFormat::Png && header.depth == 16) return readSixteenBit(path, header);
-  return linearFromRgba8(loadImage(path));
+  ImageRGBA8 rgba{header.width, header.height, std::vector<uint8_t>(size_t(header.width) * header.height * 4)};
+  decodeImage(path, header, rgba.pixels.data());
+  return linearFromRgba8(rgba);
 }

@@ -226,9 +226,12 @@ std::vector<KeyHelp> keyHelp() {
   return rows;
 }
 
-std::vector<std::string> keyHelpLines() {
-  std::vector<std::string> lines;
-  for (const KeyRow& row : kKeys) lines.push_back(std::string(row.help.keys) + "\t" + row.help.does);
+const std::vector<std::string>& keyHelpLines() {
+  static const std::vector<std::string> lines = [] {
+    std::vector<std::string> made;
+    for (const KeyRow& row : kKeys) made.push_back(std::string(row.help.keys) + "\t" + row.help.does);
+    return made;
+  }();
   return lines;
 }
 

@@ -18,8 +18,8 @@ struct KeyHelp {
 // Every row of the key table, in its order (docs/viewer.md's table lists the same keys).
 std::vector<KeyHelp> keyHelp();
 
-// The rows as H draws them: the keys, a tab, what they do.
-std::vector<std::string> keyHelpLines();
+// The rows as H draws them (every frame the help is on): the keys, a tab, what they do; made once.
+const std::vector<std::string>& keyHelpLines();
 
 // Sets the window's key, mouse and scroll callbacks, which act on `state` (the window's user
 // pointer from now on).
